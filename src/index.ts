@@ -1,0 +1,20 @@
+/**
+ * three-capture-lighting — capture-based indirect lighting for three.js.
+ *
+ * Pure math and geometry (no three.js imports): SH9 projection and irradiance, the exact 3D
+ * Delaunay tetrahedralization, and probe interpolation.
+ */
+
+export * from './sh/index.js';
+
+export { tetrahedralize, DegenerateInputError } from './tetrahedra/tetrahedralize.js';
+export type { Tetrahedralization, TetrahedralizeOptions, DegenerateReason } from './tetrahedra/tetrahedralize.js';
+
+export type { ProbeInterpolator } from './interpolation/ProbeInterpolator.js';
+export { TetrahedralMesh } from './interpolation/TetrahedralMesh.js';
+export { GridInterpolator } from './interpolation/GridInterpolator.js';
+export { PlanarMesh } from './interpolation/PlanarMesh.js';
+export { createProbeInterpolator } from './interpolation/createProbeInterpolator.js';
+export { blendSH } from './interpolation/blendSH.js';
+
+export { SH_FLOATS } from './validate.js';

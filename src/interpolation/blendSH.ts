@@ -1,0 +1,44 @@
+import { SH_FLOATS } from '../validate.js';
+
+/**
+ * Blends the SH9 of several probes: `out = Σ weights[k] · probeSH[27·indices[k] …]`.
+ * Allocation-free; meant for per-object, per-frame use, so it does not validate its arguments
+ * beyond what keeps it from reading out of range — validate once, when the arrays are built.
+ *
+ * @param indices Probe indices, e.g. from {@link ProbeInterpolator.interpolate}.
+ * @param weights One weight per index.
+ * @param probeSH 27 floats per probe, three.js `SphericalHarmonics3` order.
+ * @param out Receives 27 floats.
+ * @param count How many (index, weight) pairs to use; defaults to `indices.length`.
+ * @returns `out`.
+ */
+export function blendSH<T extends Float32Array | Float64Array | number[]>(
+	indices: ArrayLike<number>,
+	weights: ArrayLike<number>,
+	probeSH: ArrayLike<number>,
+	out: T,
+	count: number = indices.length
+): T {
+
+	for ( let i = 0; i < SH_FLOATS; i ++ ) out[ i ] = 0;
+
+	const probes = probeSH.length / SH_FLOATS;
+	for ( let k = 0; k < count; k ++ ) {
+
+		const w = weights[ k ];
+		if ( w === 0 ) continue;
+		const index = indices[ k ];
+		if ( ! ( index >= 0 && index < probes ) ) {
+
+			throw new RangeError( `blendSH: indices[${k}] = ${index} is not a probe of probeSH (${probes} probes).` );
+
+		}
+
+		const base = SH_FLOATS * index;
+		for ( let i = 0; i < SH_FLOATS; i ++ ) out[ i ] += w * probeSH[ base + i ];
+
+	}
+
+	return out;
+
+}

@@ -1,0 +1,29 @@
+import { DegenerateInputError, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
+import { TetrahedralMesh } from './TetrahedralMesh.js';
+import { PlanarMesh } from './PlanarMesh.js';
+
+/**
+ * The interpolation structure for arbitrary probe positions: a {@link TetrahedralMesh}, or — when
+ * the probes all lie in one plane (a single floor of probes, a photo map) — a {@link PlanarMesh}
+ * in their best-fit plane, so flat layouts still interpolate.
+ * @throws {DegenerateInputError} for fewer than 3 distinct probes or probes on one line.
+ */
+export function createProbeInterpolator( positions: ArrayLike<number>, options: TetrahedralizeOptions = {} ): TetrahedralMesh | PlanarMesh {
+
+	try {
+
+		return new TetrahedralMesh( positions, options );
+
+	} catch ( error ) {
+
+		if ( error instanceof DegenerateInputError && ( error.reason === 'coplanar' || error.reason === 'too-few-points' ) ) {
+
+			return new PlanarMesh( positions, options.duplicateTolerance );
+
+		}
+
+		throw error;
+
+	}
+
+}

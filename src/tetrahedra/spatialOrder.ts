@@ -1,0 +1,169 @@
+/**
+ * Insertion order for incremental Delaunay: a biased randomized insertion order (BRIO, Amenta,
+ * Choi & Rote 2003) whose rounds are each sorted along a 3D Hilbert curve. Randomness between
+ * rounds keeps the expected work optimal; the curve inside a round keeps consecutive points close,
+ * so the point-location walk from the previous insertion is a few steps long.
+ */
+
+const HILBERT_BITS = 10;
+
+/** Deterministic 32-bit PRNG (mulberry32); the same seed gives the same order on every machine. */
+export function mulberry32( seed: number ): () => number {
+
+	let a = seed >>> 0;
+	return function () {
+
+		a = ( a + 0x6D2B79F5 ) >>> 0;
+		let t = a;
+		t = Math.imul( t ^ ( t >>> 15 ), t | 1 );
+		t ^= t + Math.imul( t ^ ( t >>> 7 ), t | 61 );
+		return ( ( t ^ ( t >>> 14 ) ) >>> 0 ) / 4294967296;
+
+	};
+
+}
+
+/**
+ * Hilbert index of integer coordinates in [0, 2^bits) (Skilling, "Programming the Hilbert curve", 2004).
+ */
+export function hilbertIndex3( x: number, y: number, z: number, bits: number ): number {
+
+	const X = [ x, y, z ];
+	// Inverse undo of the Gray code, from the top bit down.
+	for ( let q = 1 << ( bits - 1 ); q > 1; q >>>= 1 ) {
+
+		const p = q - 1;
+		for ( let i = 0; i < 3; i ++ ) {
+
+			if ( X[ i ] & q ) {
+
+				X[ 0 ] ^= p;
+
+			} else {
+
+				const t = ( X[ 0 ] ^ X[ i ] ) & p;
+				X[ 0 ] ^= t;
+				X[ i ] ^= t;
+
+			}
+
+		}
+
+	}
+
+	// Gray encode.
+	X[ 1 ] ^= X[ 0 ];
+	X[ 2 ] ^= X[ 1 ];
+	let t = 0;
+	for ( let q = 1 << ( bits - 1 ); q > 1; q >>>= 1 ) {
+
+		if ( X[ 2 ] & q ) t ^= q - 1;
+
+	}
+
+	X[ 0 ] ^= t; X[ 1 ] ^= t; X[ 2 ] ^= t;
+
+	// Interleave the transposed bits into one index, most significant first.
+	let index = 0;
+	for ( let b = bits - 1; b >= 0; b -- ) {
+
+		index = index * 8 + ( ( ( X[ 0 ] >>> b ) & 1 ) << 2 ) + ( ( ( X[ 1 ] >>> b ) & 1 ) << 1 ) + ( ( X[ 2 ] >>> b ) & 1 );
+
+	}
+
+	return index;
+
+}
+
+/**
+ * Returns `indices` reordered for insertion: shuffled with `seed`, split into rounds of doubling
+ * size, each round sorted along a Hilbert curve over the points' bounding box.
+ */
+export function insertionOrder( points: Float64Array, indices: Uint32Array, seed = 1 ): Uint32Array {
+
+	const n = indices.length;
+	const order = indices.slice();
+	const random = mulberry32( seed );
+	for ( let i = n - 1; i > 0; i -- ) {
+
+		const j = Math.floor( random() * ( i + 1 ) );
+		const t = order[ i ]; order[ i ] = order[ j ]; order[ j ] = t;
+
+	}
+
+	let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
+	for ( let i = 0; i < n; i ++ ) {
+
+		const k = 3 * order[ i ];
+		const x = points[ k ], y = points[ k + 1 ], z = points[ k + 2 ];
+		if ( x < minX ) minX = x; if ( x > maxX ) maxX = x;
+		if ( y < minY ) minY = y; if ( y > maxY ) maxY = y;
+		if ( z < minZ ) minZ = z; if ( z > maxZ ) maxZ = z;
+
+	}
+
+	const cells = ( 1 << HILBERT_BITS ) - 1;
+	const size = Math.max( maxX - minX, maxY - minY, maxZ - minZ ) || 1;
+	const scale = cells / size;
+
+	// A key and the position in `order` packed in one double: 30 key bits + 23 index bits ≤ 53.
+	const keys = new Float64Array( n );
+	const INDEX_RANGE = 1 << 23;
+	const packed = n < INDEX_RANGE;
+	for ( let i = 0; i < n; i ++ ) {
+
+		const k = 3 * order[ i ];
+		const hx = Math.min( cells, Math.floor( ( points[ k ] - minX ) * scale ) );
+		const hy = Math.min( cells, Math.floor( ( points[ k + 1 ] - minY ) * scale ) );
+		const hz = Math.min( cells, Math.floor( ( points[ k + 2 ] - minZ ) * scale ) );
+		const key = hilbertIndex3( hx, hy, hz, HILBERT_BITS );
+		keys[ i ] = packed ? key * INDEX_RANGE + i : key;
+
+	}
+
+	// Rounds: [0, n/2^r) … [n/4, n/2), [n/2, n); tiny first round left as is.
+	const result = new Uint32Array( n );
+	let end = n;
+	const bounds: number[] = [];
+	while ( end > 64 ) {
+
+		bounds.push( end );
+		end = end >>> 1;
+
+	}
+
+	bounds.push( end );
+	bounds.reverse();
+
+	let start = 0;
+	for ( const stop of bounds ) {
+
+		sortRound( order, keys, start, stop, result, packed, INDEX_RANGE );
+		start = stop;
+
+	}
+
+	return result;
+
+}
+
+function sortRound( order: Uint32Array, keys: Float64Array, start: number, stop: number, result: Uint32Array, packed: boolean, indexRange: number ): void {
+
+	if ( packed ) {
+
+		const round = keys.subarray( start, stop ).slice().sort();
+		for ( let i = 0; i < round.length; i ++ ) {
+
+			result[ start + i ] = order[ round[ i ] % indexRange ];
+
+		}
+
+	} else {
+
+		const local = Array.from( { length: stop - start }, ( _, i ) => start + i );
+		local.sort( ( a, b ) => keys[ a ] - keys[ b ] );
+		for ( let i = 0; i < local.length; i ++ ) result[ start + i ] = order[ local[ i ] ];
+
+	}
+
+}

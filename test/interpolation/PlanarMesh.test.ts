@@ -1,0 +1,93 @@
+import { describe, expect, it } from 'vitest';
+import { PlanarMesh, TetrahedralMesh, createProbeInterpolator, DegenerateInputError } from '../../src/index.js';
+import { seededRandom } from '../helpers/pointSets.js';
+
+/** 30 random probes on a tilted plane through (1, 2, 3) spanned by two unit vectors. */
+function tiltedPlane( seed: number ): { positions: Float64Array; u: number[]; v: number[] } {
+
+	const u = [ Math.SQRT1_2, Math.SQRT1_2, 0 ], v = [ 0, 0.6, 0.8 ].map( ( c, i ) => c - 0.6 * Math.SQRT1_2 * u[ i ] );
+	const length = Math.hypot( ...v );
+	for ( let i = 0; i < 3; i ++ ) v[ i ] /= length;
+	const random = seededRandom( seed );
+	const positions = new Float64Array( 90 );
+	for ( let k = 0; k < 30; k ++ ) {
+
+		const a = 4 * random(), b = 4 * random();
+		for ( let i = 0; i < 3; i ++ ) positions[ 3 * k + i ] = [ 1, 2, 3 ][ i ] + a * u[ i ] + b * v[ i ];
+
+	}
+
+	return { positions, u, v };
+
+}
+
+describe( 'PlanarMesh and createProbeInterpolator (coplanar layouts: a floor of probes, a photo map)', () => {
+
+	const { positions, u, v } = tiltedPlane( 2 );
+	const indices = new Uint32Array( 4 ), weights = new Float64Array( 4 );
+
+	it( 'createProbeInterpolator falls back to a PlanarMesh for coplanar probes, TetrahedralMesh otherwise', () => {
+
+		expect( createProbeInterpolator( positions ) ).toBeInstanceOf( PlanarMesh );
+		const lifted = Float64Array.from( [ ...positions, 0, 0, 10 ] );
+		expect( createProbeInterpolator( lifted ) ).toBeInstanceOf( TetrahedralMesh );
+
+	} );
+
+	it( 'reproduces a field linear in the plane, ignores the offset along the normal', () => {
+
+		const mesh = new PlanarMesh( positions );
+		const n = [ u[ 1 ] * v[ 2 ] - u[ 2 ] * v[ 1 ], u[ 2 ] * v[ 0 ] - u[ 0 ] * v[ 2 ], u[ 0 ] * v[ 1 ] - u[ 1 ] * v[ 0 ] ];
+		const f = ( x: number, y: number, z: number ) => 2 * x - y + 0.5 * z;
+		const fInPlane = ( p: number[] ) => { // f of the point projected onto the plane
+			const d = ( p[ 0 ] - 1 ) * n[ 0 ] + ( p[ 1 ] - 2 ) * n[ 1 ] + ( p[ 2 ] - 3 ) * n[ 2 ];
+			return f( p[ 0 ] - d * n[ 0 ], p[ 1 ] - d * n[ 1 ], p[ 2 ] - d * n[ 2 ] );
+		};
+		// Random points inside the triangles, lifted off the plane along its normal.
+		const random = seededRandom( 9 );
+		let hint = - 1;
+		for ( let q = 0; q < 2000; q ++ ) {
+
+			const t = Math.floor( random() * mesh.cellCount );
+			let r0 = random(), r1 = random();
+			if ( r0 + r1 > 1 ) { r0 = 1 - r0; r1 = 1 - r1; }
+			const r = [ r0, r1, 1 - r0 - r1 ];
+			const off = ( random() - 0.5 ) * 3;
+			const p = [ 0, 1, 2 ].map( ( i ) => r[ 0 ] * positions[ 3 * mesh.triangles[ 3 * t ] + i ] + r[ 1 ] * positions[ 3 * mesh.triangles[ 3 * t + 1 ] + i ] + r[ 2 ] * positions[ 3 * mesh.triangles[ 3 * t + 2 ] + i ] + off * n[ i ] );
+			hint = mesh.interpolate( p[ 0 ], p[ 1 ], p[ 2 ], indices, weights, hint );
+			let value = 0, sum = 0;
+			for ( let k = 0; k < 4; k ++ ) {
+
+				expect( weights[ k ] ).toBeGreaterThanOrEqual( 0 );
+				sum += weights[ k ];
+				value += weights[ k ] * f( positions[ 3 * indices[ k ] ], positions[ 3 * indices[ k ] + 1 ], positions[ 3 * indices[ k ] + 2 ] );
+
+			}
+
+			expect( weights[ 3 ] ).toBe( 0 );
+			expect( sum ).toBeCloseTo( 1, 12 );
+			expect( Math.abs( value - fInPlane( p ) ) ).toBeLessThan( 1e-9 );
+
+		}
+
+	} );
+
+	it( 'outside the triangulated region: weights of the nearest boundary point', () => {
+
+		const square = new PlanarMesh( [ 0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0.5, 0, 0.5 ] ); // y = 0 plane
+		square.interpolate( 3, 0, 0.25, indices, weights );
+		const x = [ 0, 1, 2 ].reduce( ( s, k ) => s + weights[ k ] * square.positions[ 3 * indices[ k ] ], 0 );
+		const z = [ 0, 1, 2 ].reduce( ( s, k ) => s + weights[ k ] * square.positions[ 3 * indices[ k ] + 2 ], 0 );
+		expect( x ).toBeCloseTo( 1, 12 );
+		expect( z ).toBeCloseTo( 0.25, 12 );
+
+	} );
+
+	it( 'rejects collinear and too few probes with a DegenerateInputError', () => {
+
+		expect( () => createProbeInterpolator( [ 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3 ] ) ).toThrow( /one line/ );
+		expect( () => createProbeInterpolator( [ 0, 0, 0, 1, 1, 1 ] ) ).toThrow( DegenerateInputError );
+
+	} );
+
+} );

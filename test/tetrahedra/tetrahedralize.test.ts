@@ -1,0 +1,203 @@
+import { describe, expect, it } from 'vitest';
+import { tetrahedralize, DegenerateInputError } from '../../src/index.js';
+import { checkDelaunay, type DelaunayReport } from '../helpers/delaunayChecks.js';
+import { gridPoints, integerSpherePoints, randomPoints, seededRandom } from '../helpers/pointSets.js';
+
+/** Everything a valid Delaunay tetrahedralization of the convex hull must satisfy. */
+function expectValid( report: DelaunayReport, expectedVolume?: number ): void {
+
+	expect( report.tetrahedra ).toBeGreaterThan( 0 );
+	expect( report.nonPositive, 'flat or inverted tetrahedra' ).toBe( 0 );
+	expect( report.asymmetricNeighbors, 'neighbour links not symmetric' ).toBe( 0 );
+	expect( report.mismatchedFaces, 'neighbours that do not share the face' ).toBe( 0 );
+	expect( report.unusedPoints, 'input points missing from the mesh' ).toBe( 0 );
+	expect( report.hullViolations, 'boundary faces that are not convex-hull faces' ).toBe( 0 );
+	expect( report.emptySphereViolations, 'points strictly inside a circumsphere' ).toBe( 0 );
+	// Positive cells with symmetric face links, a convex boundary and equal volumes: the cells tile the hull once.
+	expect( Math.abs( report.volumeSum - report.hullVolume ) ).toBeLessThanOrEqual( 1e-9 * report.hullVolume );
+	if ( expectedVolume !== undefined ) {
+
+		expect( Math.abs( report.volumeSum - expectedVolume ) ).toBeLessThanOrEqual( 1e-9 * expectedVolume );
+
+	}
+
+}
+
+function run( points: Float64Array ): DelaunayReport {
+
+	const { tetrahedra, neighbors, duplicates } = tetrahedralize( points );
+	const skip = new Set<number>();
+	for ( let i = 0; i < duplicates.length; i += 2 ) skip.add( duplicates[ i ] );
+	return checkDelaunay( points, tetrahedra, neighbors, skip );
+
+}
+
+describe( 'tetrahedralize: random point sets (brute-force Delaunay and tiling checks)', () => {
+
+	for ( const seed of [ 1, 2, 3 ] ) {
+
+		it( `300 uniform points, seed ${seed}`, () => expectValid( run( randomPoints( 300, seed ) ) ) );
+
+	}
+
+	it( '5,000 uniform points', () => expectValid( run( randomPoints( 5000, 7 ) ) ) );
+
+	it( 'two clusters 1e4 apart (each 0.01 wide)', () => {
+
+		// Separated along x only: along a diagonal the test's own float volume sums would cancel
+		// catastrophically (terms of 1e12 for cells of 1e-4), not the mesh.
+		const random = seededRandom( 11 );
+		const points = new Float64Array( 3 * 400 );
+		for ( let i = 0; i < 400; i ++ ) {
+
+			for ( let a = 0; a < 3; a ++ ) points[ 3 * i + a ] = random() * 0.01;
+			if ( i >= 200 ) points[ 3 * i ] += 1e4;
+
+		}
+
+		expectValid( run( points ) );
+
+	} );
+
+} );
+
+describe( 'tetrahedralize: degenerate layouts (co-spherical, co-planar subsets)', () => {
+
+	// On a grid every cube's 8 corners are co-spherical: each cell must be split into 5 or 6
+	// tetrahedra and nothing else, and the cells tile the box exactly.
+	const grids: [ number, number, number, number ][] = [ [ 4, 4, 4, 0.1 ], [ 12, 6, 6, 0.1 ], [ 12, 6, 6, 1 ], [ 20, 20, 20, 0.1 ] ];
+	for ( const [ nx, ny, nz, spacing ] of grids ) {
+
+		it( `${nx}x${ny}x${nz} grid, spacing ${spacing}`, () => {
+
+			const report = run( gridPoints( nx, ny, nz, spacing ) );
+			const boxes = ( nx - 1 ) * ( ny - 1 ) * ( nz - 1 );
+			expectValid( report, boxes * spacing ** 3 );
+			expect( report.tetrahedra ).toBeGreaterThanOrEqual( 5 * boxes );
+			expect( report.tetrahedra ).toBeLessThanOrEqual( 6 * boxes );
+
+		} );
+
+	}
+
+	it( 'all 30 integer points on the sphere of radius 3 (exactly co-spherical) plus its centre', () => {
+
+		const sphere = integerSpherePoints( 3 );
+		const points = Float64Array.from( [ ...sphere, 0, 0, 0 ] );
+		expectValid( run( points ) );
+
+	} );
+
+	it( 'the 102 integer points on the sphere of radius 9 alone (every tetrahedron has the same circumsphere)', () => {
+
+		const points = integerSpherePoints( 9 );
+		expect( points.length / 3 ).toBe( 102 );
+		expectValid( run( points ) );
+
+	} );
+
+	it( 'a dense plane of 400 grid points with 20 random points above and below', () => {
+
+		const plane = gridPoints( 20, 20, 1, 0.05 );
+		const random = seededRandom( 5 );
+		const extra: number[] = [];
+		for ( let i = 0; i < 20; i ++ ) extra.push( random(), random(), ( random() - 0.5 ) * 0.5 );
+		expectValid( run( Float64Array.from( [ ...plane, ...extra ] ) ) );
+
+	} );
+
+	it( 'points on the faces and edges of a cube (many coplanar hull points)', () => {
+
+		const out: number[] = [];
+		for ( let i = 0; i <= 6; i ++ ) for ( let j = 0; j <= 6; j ++ ) for ( let k = 0; k <= 6; k ++ ) {
+
+			if ( i === 0 || i === 6 || j === 0 || j === 6 || k === 0 || k === 6 ) out.push( i / 6, j / 6, k / 6 );
+
+		}
+
+		out.push( 0.5, 0.5, 0.5 );
+		expectValid( run( Float64Array.from( out ) ), 1 );
+
+	} );
+
+	it( 'gives the same mesh whatever the insertion seed (perturbation decides ties by position, not order)', () => {
+
+		const points = gridPoints( 5, 4, 3, 0.1 );
+		const canonical = ( seed: number ) => {
+
+			const { tetrahedra } = tetrahedralize( points, { seed } );
+			const cells: string[] = [];
+			for ( let t = 0; t < tetrahedra.length; t += 4 ) cells.push( Array.from( tetrahedra.subarray( t, t + 4 ) ).sort( ( a, b ) => a - b ).join( ',' ) );
+			return cells.sort().join( ';' );
+
+		};
+
+		expect( canonical( 2 ) ).toBe( canonical( 1 ) );
+		expect( canonical( 99 ) ).toBe( canonical( 1 ) );
+
+	} );
+
+} );
+
+describe( 'tetrahedralize: duplicates and bad input', () => {
+
+	it( 'merges exact and near duplicates and reports them', () => {
+
+		const points = Array.from( gridPoints( 3, 3, 3, 1 ) );
+		points.push( 1, 1, 1 ); // exact duplicate of point 13
+		points.push( 2, 2, 2 + 1e-12 ); // within tolerance of point 26
+		const { tetrahedra, neighbors, duplicates } = tetrahedralize( points );
+		expect( Array.from( duplicates ) ).toEqual( [ 27, 13, 28, 26 ] );
+		const report = checkDelaunay( Float64Array.from( points ), tetrahedra, neighbors, new Set( [ 27, 28 ] ) );
+		expectValid( report, 8 );
+		expect( Array.from( tetrahedra ).some( ( v ) => v === 27 || v === 28 ) ).toBe( false );
+
+	} );
+
+	it( 'keeps points that are close but beyond the tolerance', () => {
+
+		const points = Array.from( gridPoints( 3, 3, 3, 1 ) );
+		points.push( 1, 1, 1 + 1e-6 );
+		const { duplicates, tetrahedra } = tetrahedralize( points );
+		expect( duplicates.length ).toBe( 0 );
+		expect( Array.from( tetrahedra ) ).toContain( 27 );
+
+	} );
+
+	it( 'rejects fewer than 4 points', () => {
+
+		expect( () => tetrahedralize( [ 0, 0, 0, 1, 0, 0, 0, 1, 0 ] ) ).toThrow( /at least 4 points/ );
+		expect( () => tetrahedralize( [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0 ] ) ).toThrow( /only 3 distinct points/ );
+
+	} );
+
+	it( 'rejects coplanar and collinear sets with a DegenerateInputError naming the reason', () => {
+
+		const floor = gridPoints( 5, 1, 5, 1 ); // y = 0 everywhere
+		expect( () => tetrahedralize( floor ) ).toThrow( DegenerateInputError );
+		try {
+
+			tetrahedralize( floor );
+
+		} catch ( error ) {
+
+			expect( ( error as DegenerateInputError ).reason ).toBe( 'coplanar' );
+			expect( ( error as Error ).message ).toMatch( /one plane/ );
+
+		}
+
+		const line = gridPoints( 6, 1, 1, 1 );
+		expect( () => tetrahedralize( line ) ).toThrow( /one line/ );
+
+	} );
+
+	it( 'rejects NaN, Infinity and ragged arrays naming the argument', () => {
+
+		expect( () => tetrahedralize( [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, NaN ] ) ).toThrow( /tetrahedralize: points\[11\] is NaN/ );
+		expect( () => tetrahedralize( [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, Infinity, 1 ] ) ).toThrow( /points\[10\] is Infinity/ );
+		expect( () => tetrahedralize( [ 0, 0, 0, 1, 0 ] ) ).toThrow( /multiple of 3/ );
+		expect( () => tetrahedralize( null as unknown as number[] ) ).toThrow( /points must be an array/ );
+
+	} );
+
+} );
