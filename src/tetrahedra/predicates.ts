@@ -84,6 +84,15 @@ export function inSpherePerturbed( p: Float64Array, a: number, b: number, c: num
 	const s = inSphere( p, a, b, c, d, e );
 	if ( s > 0 ) return 1;
 	if ( s < 0 ) return - 1;
+	return inSphereTieBreak( p, a, b, c, d, e );
+
+}
+
+/**
+ * The perturbed in-sphere sign when the exact in-sphere value is 0 (e on the circumsphere of the
+ * positive tetrahedron abcd): +1 inside, −1 outside.
+ */
+export function inSphereTieBreak( p: Float64Array, a: number, b: number, c: number, d: number, e: number ): number {
 
 	_sorted[ 0 ] = a; _sorted[ 1 ] = b; _sorted[ 2 ] = c; _sorted[ 3 ] = d; _sorted[ 4 ] = e;
 	sortByRank( p, 5 );

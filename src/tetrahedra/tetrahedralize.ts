@@ -1,5 +1,5 @@
 import { assertPoints } from '../validate.js';
-import { orient, inSphere, inSpherePerturbed, inCirclePerturbed } from './predicates.js';
+import { orient, inSphere, inSphereTieBreak, inCirclePerturbed } from './predicates.js';
 import { insertionOrder } from './spatialOrder.js';
 import { mergeDuplicates } from './mergeDuplicates.js';
 
@@ -390,7 +390,7 @@ class DelaunayBuilder {
 
 			const s = inSphere( p, a, b, c, d, q );
 			if ( s !== 0 ) return s > 0;
-			return inSpherePerturbed( p, a, b, c, d, q ) > 0;
+			return inSphereTieBreak( p, a, b, c, d, q ) > 0;
 
 		}
 

@@ -201,3 +201,54 @@ describe( 'tetrahedralize: duplicates and bad input', () => {
 	} );
 
 } );
+
+describe( 'the brute-force checker itself catches broken meshes', () => {
+
+	const points = randomPoints( 60, 4 );
+	const good = tetrahedralize( points );
+
+	it( 'flags an inverted tetrahedron, a broken neighbour link, a missing cell', () => {
+
+		const inverted = good.tetrahedra.slice();
+		[ inverted[ 0 ], inverted[ 1 ] ] = [ inverted[ 1 ], inverted[ 0 ] ];
+		expect( checkDelaunay( points, inverted, good.neighbors ).nonPositive ).toBe( 1 );
+
+		const unlinked = good.neighbors.slice();
+		const i = unlinked.findIndex( ( u ) => u >= 0 );
+		unlinked[ i ] = - 1;
+		const report = checkDelaunay( points, good.tetrahedra, unlinked );
+		expect( report.asymmetricNeighbors + report.hullViolations ).toBeGreaterThan( 0 );
+
+		const dropped = checkDelaunay( points, good.tetrahedra.slice( 4 ), good.neighbors.slice( 4 ) );
+		expect( Math.abs( dropped.volumeSum - dropped.hullVolume ) ).toBeGreaterThan( 1e-9 );
+
+	} );
+
+	it( 'flags a non-Delaunay flip (a point strictly inside a circumsphere)', () => {
+
+		// A triangular bipyramid (triangle 0-1-2, apexes 3 and 4) has two splits: two tetrahedra
+		// sharing the triangle, or three around the apex edge 3–4. In general position exactly one
+		// is Delaunay, so the one tetrahedralize did not choose must break the empty-sphere rule.
+		const bipyramid = Float64Array.from( [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, 1, 0.3, 0.3, - 0.1 ] );
+		const delaunay = tetrahedralize( bipyramid );
+		expectValid( checkDelaunay( bipyramid, delaunay.tetrahedra, delaunay.neighbors ) );
+		const chosen = delaunay.tetrahedra.length / 4;
+		expect( [ 2, 3 ] ).toContain( chosen );
+		const other = chosen === 2
+			? Uint32Array.from( [ 0, 1, 4, 3, 1, 2, 4, 3, 2, 0, 4, 3 ] )
+			: Uint32Array.from( [ 0, 1, 2, 3, 0, 1, 2, 4 ] );
+		const none = new Int32Array( other.length ).fill( - 1 );
+		for ( let t = 0; t < other.length / 4; t ++ ) {
+
+			const one = other.subarray( 4 * t, 4 * t + 4 );
+			if ( checkDelaunay( bipyramid, one, none.subarray( 0, 4 ) ).nonPositive > 0 ) [ one[ 0 ], one[ 1 ] ] = [ one[ 1 ], one[ 0 ] ];
+
+		}
+
+		const report = checkDelaunay( bipyramid, other, none );
+		expect( report.nonPositive ).toBe( 0 );
+		expect( report.emptySphereViolations ).toBeGreaterThan( 0 );
+
+	} );
+
+} );

@@ -1,0 +1,24 @@
+import { defineConfig } from 'vite';
+import { fileURLToPath } from 'node:url';
+import { resolve } from 'node:path';
+
+const root = fileURLToPath( new URL( '.', import.meta.url ) );
+
+// The examples import the library by its package name, as users do; here it resolves to src/.
+export default defineConfig( {
+	root: resolve( root, 'examples' ),
+	resolve: {
+		alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ) },
+	},
+	server: { host: '127.0.0.1', port: 5173, strictPort: false },
+	build: {
+		outDir: resolve( root, 'dist-examples' ),
+		emptyOutDir: true,
+		rollupOptions: {
+			input: {
+				index: resolve( root, 'examples/index.html' ),
+				basic: resolve( root, 'examples/basic.html' ),
+			},
+		},
+	},
+} );
