@@ -18,3 +18,13 @@ export { createProbeInterpolator } from './interpolation/createProbeInterpolator
 export { blendSH } from './interpolation/blendSH.js';
 
 export { SH_FLOATS } from './validate.js';
+
+// three.js glue: GPU capture and projection, the probe volume, patched materials.
+export { SHProjector } from './capture/SHProjector.js';
+export { ProbeCapturer } from './capture/ProbeCapturer.js';
+export type { ProbeCaptureSettings, ProbeCaptureOptions } from './capture/ProbeCapturer.js';
+export { projectEquirectToSHGPU } from './capture/projectEquirectToSHGPU.js';
+export { LightProbeVolume } from './runtime/LightProbeVolume.js';
+export type { LightProbeVolumeParameters, LightProbeVolumeCaptureOptions, AddOptions, ProbeRole } from './runtime/LightProbeVolume.js';
+export { patchMaterial, unpatchMaterial, getProbeVolumeUniforms } from './runtime/patchMaterial.js';
+export type { PatchMaterialOptions, ProbeVolumeUniforms } from './runtime/patchMaterial.js';

@@ -120,12 +120,23 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 		const count = this.tetrahedra.length / 4;
 		let t = hint >= 0 && hint < count ? hint | 0 : 0;
-		const neighbors = this.neighbors;
+		const neighbors = this.neighbors, m = this.inverseMatrices, p = this.positions, tetrahedra = this.tetrahedra;
 		for ( let steps = 0; steps <= count; steps ++ ) {
 
-			this.barycentric( t, x, y, z, _weights );
-			let worst = 0, worstValue = _weights[ 0 ];
-			for ( let i = 1; i < 4; i ++ ) if ( _weights[ i ] < worstValue ) { worstValue = _weights[ i ]; worst = i; }
+			// Barycentric weights inline (this is the per-object, per-frame hot loop); they are left
+			// in _weights for interpolate().
+			const k = 9 * t, r = 3 * tetrahedra[ 4 * t + 3 ];
+			const dx = x - p[ r ], dy = y - p[ r + 1 ], dz = z - p[ r + 2 ];
+			const w0 = m[ k ] * dx + m[ k + 1 ] * dy + m[ k + 2 ] * dz;
+			const w1 = m[ k + 3 ] * dx + m[ k + 4 ] * dy + m[ k + 5 ] * dz;
+			const w2 = m[ k + 6 ] * dx + m[ k + 7 ] * dy + m[ k + 8 ] * dz;
+			const w3 = 1 - w0 - w1 - w2;
+			_weights[ 0 ] = w0; _weights[ 1 ] = w1; _weights[ 2 ] = w2; _weights[ 3 ] = w3;
+
+			let worst = 0, worstValue = w0;
+			if ( w1 < worstValue ) { worstValue = w1; worst = 1; }
+			if ( w2 < worstValue ) { worstValue = w2; worst = 2; }
+			if ( w3 < worstValue ) { worstValue = w3; worst = 3; }
 			if ( worstValue >= - INSIDE_EPSILON ) return t;
 			const next = neighbors[ 4 * t + worst ];
 			// Beyond a hull face's plane means outside the (convex) hull.
@@ -178,27 +189,15 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
 
 		const tetrahedra = this.tetrahedra;
-		let t = this.locate( x, y, z, hint );
+		let t = this.locate( x, y, z, hint ); // leaves t's weights in _weights
 		if ( t >= 0 ) {
 
-			this.barycentric( t, x, y, z, _weights );
 			// Clamp the slack the walk allowed, so weights stay ≥ 0 and sum to 1.
-			let sum = 0;
-			for ( let i = 0; i < 4; i ++ ) {
-
-				const w = _weights[ i ] > 0 ? _weights[ i ] : 0;
-				_weights[ i ] = w;
-				sum += w;
-
-			}
-
-			for ( let i = 0; i < 4; i ++ ) {
-
-				indices[ i ] = tetrahedra[ 4 * t + i ];
-				weights[ i ] = _weights[ i ] / sum;
-
-			}
-
+			const w0 = _weights[ 0 ] > 0 ? _weights[ 0 ] : 0, w1 = _weights[ 1 ] > 0 ? _weights[ 1 ] : 0;
+			const w2 = _weights[ 2 ] > 0 ? _weights[ 2 ] : 0, w3 = _weights[ 3 ] > 0 ? _weights[ 3 ] : 0;
+			const s = 1 / ( w0 + w1 + w2 + w3 ), k = 4 * t;
+			indices[ 0 ] = tetrahedra[ k ]; indices[ 1 ] = tetrahedra[ k + 1 ]; indices[ 2 ] = tetrahedra[ k + 2 ]; indices[ 3 ] = tetrahedra[ k + 3 ];
+			weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = w3 * s;
 			return t;
 
 		}

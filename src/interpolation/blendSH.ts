@@ -20,13 +20,9 @@ export function blendSH<T extends Float32Array | Float64Array | number[]>(
 	count: number = indices.length
 ): T {
 
-	for ( let i = 0; i < SH_FLOATS; i ++ ) out[ i ] = 0;
-
 	const probes = probeSH.length / SH_FLOATS;
 	for ( let k = 0; k < count; k ++ ) {
 
-		const w = weights[ k ];
-		if ( w === 0 ) continue;
 		const index = indices[ k ];
 		if ( ! ( index >= 0 && index < probes ) ) {
 
@@ -34,7 +30,29 @@ export function blendSH<T extends Float32Array | Float64Array | number[]>(
 
 		}
 
-		const base = SH_FLOATS * index;
+	}
+
+	if ( count === 4 ) {
+
+		// The tetrahedral case, once per object per frame: one pass, no zero-fill.
+		const w0 = weights[ 0 ], w1 = weights[ 1 ], w2 = weights[ 2 ], w3 = weights[ 3 ];
+		const b0 = SH_FLOATS * indices[ 0 ], b1 = SH_FLOATS * indices[ 1 ], b2 = SH_FLOATS * indices[ 2 ], b3 = SH_FLOATS * indices[ 3 ];
+		for ( let i = 0; i < SH_FLOATS; i ++ ) {
+
+			out[ i ] = w0 * probeSH[ b0 + i ] + w1 * probeSH[ b1 + i ] + w2 * probeSH[ b2 + i ] + w3 * probeSH[ b3 + i ];
+
+		}
+
+		return out;
+
+	}
+
+	for ( let i = 0; i < SH_FLOATS; i ++ ) out[ i ] = 0;
+	for ( let k = 0; k < count; k ++ ) {
+
+		const w = weights[ k ];
+		if ( w === 0 ) continue;
+		const base = SH_FLOATS * indices[ k ];
 		for ( let i = 0; i < SH_FLOATS; i ++ ) out[ i ] += w * probeSH[ base + i ];
 
 	}

@@ -1,0 +1,242 @@
+import {
+	CubeCamera, HalfFloatType, FloatType, NearestFilter, WebGLCubeRenderTarget,
+	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
+} from 'three';
+import { SHProjector } from './SHProjector.js';
+import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
+import { SH_FLOATS, assertInteger, assertNumber, assertPoints } from '../validate.js';
+
+/** Settings of {@link ProbeCapturer}. */
+export interface ProbeCaptureSettings {
+
+	/** Cube face edge in texels, 1..256 (paper: 8..256, experiments 128). Default 32. */
+	resolution?: number;
+
+	/** Near plane of the cube camera. Default 0.05. */
+	near?: number;
+
+	/** Far plane of the cube camera. Default 1000. */
+	far?: number;
+
+	/** Cube render target type: `HalfFloatType` (default) or `FloatType`. */
+	type?: TextureDataType;
+
+	/** Texel solid-angle formula of the projection. Default `'exact'`. */
+	solidAngle?: CubeSolidAngleMode;
+
+}
+
+/** Per-call options of {@link ProbeCapturer.capture}. */
+export interface ProbeCaptureOptions {
+
+	/** Objects hidden while capturing (dynamic objects must not light themselves). */
+	exclude?: Iterable<Object3D>;
+
+	/** Objects for which this returns false are hidden while capturing. */
+	filter?: ( object: Object3D ) => boolean;
+
+	/** When given, the cube camera sees only these layers. */
+	layers?: Layers;
+
+	/** Called after each probe with the number of probes done and the total. */
+	onProgress?: ( done: number, total: number ) => void;
+
+}
+
+/**
+ * Renders cube maps of a scene at probe positions and projects them to SH9 on the GPU. One cube
+ * render target serves every probe; probes are projected in batches, each ending in one small
+ * read-back (27 floats per probe).
+ *
+ * ```js
+ * const capturer = new ProbeCapturer( renderer, { resolution: 64 } );
+ * const sh = await capturer.capture( scene, positions, new Float32Array( 27 * count ) );
+ * capturer.dispose();
+ * ```
+ */
+export class ProbeCapturer {
+
+	/** The renderer that draws the captures. */
+	readonly renderer: WebGLRenderer;
+
+	/** Cube face edge in texels. */
+	readonly resolution: number;
+
+	/** The cube render target every probe is rendered into. */
+	readonly cubeRenderTarget: WebGLCubeRenderTarget;
+
+	/** The cube camera; its position is set to each probe in turn. */
+	readonly cubeCamera: CubeCamera;
+
+	/** The GPU projection. */
+	readonly projector: SHProjector;
+
+	private readonly solidAngle: CubeSolidAngleMode;
+
+	/**
+	 * @param renderer A WebGL2 renderer.
+	 * @param settings See {@link ProbeCaptureSettings}.
+	 */
+	constructor( renderer: WebGLRenderer, settings: ProbeCaptureSettings = {} ) {
+
+		const { resolution = 32, near = 0.05, far = 1000, type = HalfFloatType, solidAngle = 'exact' } = settings;
+		assertInteger( 'ProbeCapturer', 'resolution', resolution, 1, 256 );
+		assertNumber( 'ProbeCapturer', 'near', near );
+		assertNumber( 'ProbeCapturer', 'far', far );
+		if ( ! ( near > 0 && far > near ) ) throw new RangeError( `ProbeCapturer: need 0 < near < far, got near ${near}, far ${far}.` );
+		if ( type !== HalfFloatType && type !== FloatType ) throw new RangeError( 'ProbeCapturer: type must be HalfFloatType or FloatType (the capture holds linear HDR radiance).' );
+
+		this.renderer = renderer;
+		this.resolution = resolution;
+		this.solidAngle = solidAngle;
+		this.cubeRenderTarget = new WebGLCubeRenderTarget( resolution, {
+			type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+		} );
+		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
+		this.projector = new SHProjector( renderer );
+
+	}
+
+	/**
+	 * Captures the scene at each position and writes 27 SH floats per probe into `target`.
+	 * @param positions Flat x, y, z per probe.
+	 * @param target Receives 27 floats per probe, from `offset`.
+	 * @returns `target`, once every probe is done.
+	 * @throws {Error} when the WebGL context is lost during the capture (`target` then keeps what it had).
+	 */
+	async capture( scene: Scene, positions: ArrayLike<number>, target: Float32Array, options: ProbeCaptureOptions = {}, offset = 0 ): Promise<Float32Array> {
+
+		const count = assertPoints( 'ProbeCapturer.capture', 'positions', positions, 1 );
+		if ( target.length < offset + SH_FLOATS * count ) {
+
+			throw new RangeError( `ProbeCapturer.capture: target must have room for ${SH_FLOATS * count} floats from offset ${offset}, got length ${target.length}.` );
+
+		}
+
+		const { renderer, cubeCamera, projector } = this;
+		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
+		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
+		const autoClear = renderer.autoClear;
+		// Results go to `target` only once complete, so a context loss mid-way leaves the caller's
+		// SH as they were.
+		const batch = SHProjector.batchCapacity( this.resolution );
+		const result = new Float32Array( SH_FLOATS * count );
+		let hidden = this.hide( scene, options );
+		let lastYield = now();
+
+		try {
+
+			scene.updateMatrixWorld();
+			for ( let start = 0; start < count; start += batch ) {
+
+				const size = Math.min( batch, count - start );
+				projector.begin( 'cube', this.resolution, size, { solidAngle: this.solidAngle } );
+				for ( let i = start; i < start + size; i ++ ) {
+
+					this.checkContext();
+					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
+					cubeCamera.updateMatrixWorld();
+					renderer.autoClear = true; // every face must start cleared
+					cubeCamera.update( renderer, scene );
+					projector.add( this.cubeRenderTarget.texture );
+					options.onProgress?.( i + 1, count );
+
+					// Give a page a frame now and then to paint its progress bar, with the hidden
+					// objects shown again, so the frame it draws looks normal.
+					if ( i + 1 < count && now() - lastYield > 30 ) {
+
+						renderer.autoClear = autoClear;
+						show( hidden );
+						await nextTask();
+						hidden = this.hide( scene, options );
+						lastYield = now();
+
+					}
+
+				}
+
+				this.checkContext();
+				projector.finish( result, SH_FLOATS * start );
+
+			}
+
+		} finally {
+
+			renderer.autoClear = autoClear;
+			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
+			show( hidden );
+
+		}
+
+		this.checkContext();
+		for ( let i = 0; i < result.length; i ++ ) {
+
+			if ( ! Number.isFinite( result[ i ] ) ) throw new Error( `ProbeCapturer.capture: probe ${Math.floor( i / SH_FLOATS )} captured a non-finite value (${result[ i ]}); check the scene for NaN/Infinity emissive or light values.` );
+
+		}
+
+		target.set( result, offset );
+		return target;
+
+	}
+
+	private checkContext(): void {
+
+		if ( this.renderer.getContext().isContextLost() ) {
+
+			throw new Error( 'ProbeCapturer.capture: the WebGL context was lost; the SH already held are kept. Capture again after "webglcontextrestored".' );
+
+		}
+
+	}
+
+	/** Hides excluded and filtered-out objects; returns them so they can be shown again. */
+	private hide( scene: Scene, options: ProbeCaptureOptions ): Object3D[] {
+
+		const hidden: Object3D[] = [];
+		const hideOne = ( object: Object3D ) => {
+
+			if ( object.visible ) { object.visible = false; hidden.push( object ); }
+
+		};
+
+		if ( options.exclude ) for ( const object of options.exclude ) hideOne( object );
+		if ( options.filter ) {
+
+			const filter = options.filter;
+			scene.traverseVisible( ( object ) => { if ( object !== scene && ! filter( object ) ) hideOne( object ); } );
+
+		}
+
+		return hidden;
+
+	}
+
+	/** Frees the cube render target and the projection's targets and materials. */
+	dispose(): void {
+
+		this.cubeRenderTarget.dispose();
+		this.projector.dispose();
+
+	}
+
+}
+
+function show( objects: Object3D[] ): void {
+
+	for ( const object of objects ) object.visible = true;
+
+}
+
+function now(): number {
+
+	return typeof performance !== 'undefined' ? performance.now() : Date.now();
+
+}
+
+/** Yields to the event loop so a page can repaint a progress bar between batches. */
+function nextTask(): Promise<void> {
+
+	return new Promise( ( resolve ) => setTimeout( resolve, 0 ) );
+
+}

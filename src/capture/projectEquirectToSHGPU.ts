@@ -1,0 +1,39 @@
+import type { Texture, WebGLRenderer } from 'three';
+import { SHProjector } from './SHProjector.js';
+import { SH_FLOATS } from '../validate.js';
+
+/**
+ * GPU counterpart of {@link projectEquirectToSH}: projects an equirectangular panorama texture
+ * (an `.hdr` through three's `HDRLoader`, or an LDR JPEG/PNG with `colorSpace = SRGBColorSpace`,
+ * which the GPU decodes to linear) onto SH9, in the same world orientation three uses when the
+ * texture is shown with `EquirectangularReflectionMapping`.
+ *
+ * @param renderer A WebGL2 renderer.
+ * @param texture The panorama; it must have its image loaded (width and height known).
+ * @param target Receives the 27 floats; a new Float32Array(27) when omitted.
+ * @returns `target`.
+ */
+export function projectEquirectToSHGPU( renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
+
+	const image = texture?.image as { width?: number; height?: number } | undefined;
+	const width = image?.width, height = image?.height;
+	if ( ! width || ! height ) {
+
+		throw new Error( 'projectEquirectToSHGPU: texture has no image size yet; wait for the loader to finish (e.g. await loader.loadAsync( url )).' );
+
+	}
+
+	const projector = new SHProjector( renderer );
+	try {
+
+		projector.begin( 'equirect', width, 1, { height } );
+		projector.add( texture );
+		return projector.finish( target );
+
+	} finally {
+
+		projector.dispose();
+
+	}
+
+}

@@ -1,0 +1,311 @@
+import type { Material, Mesh, Object3D, Scene, Vector3, WebGLRenderer } from 'three';
+import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
+import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
+import { blendSH } from '../interpolation/blendSH.js';
+import { irradianceMatrices } from '../sh/irradiance.js';
+import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
+import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
+
+/** What a probe is for (paper 2.1.1): light from the sky, bounce from the ground, colour bleeding, or filling gaps. */
+export type ProbeRole = 'sky' | 'bounce' | 'bleed' | 'fill';
+
+const ROLES: readonly ProbeRole[] = [ 'sky', 'bounce', 'bleed', 'fill' ];
+
+/** Constructor argument of {@link LightProbeVolume}. */
+export interface LightProbeVolumeParameters {
+
+	/** Flat x, y, z per probe (at least 3 probes; 4 not all in one plane for a 3D volume). */
+	positions: ArrayLike<number>;
+
+	/** 27 floats per probe, three.js `SphericalHarmonics3` layout; zeros (black) when omitted. */
+	sh?: ArrayLike<number>;
+
+	/** Optional name per probe. */
+	names?: readonly string[];
+
+	/** Optional role per probe; default `'fill'`. */
+	roles?: readonly ProbeRole[];
+
+}
+
+/** Options of {@link LightProbeVolume.capture}: capture settings plus per-call options. */
+export type LightProbeVolumeCaptureOptions = ProbeCaptureSettings & Omit<ProbeCaptureOptions, 'exclude'> & {
+
+	/** More objects to hide during the capture; objects registered with `add()` are always hidden. */
+	exclude?: Iterable<Object3D>;
+
+};
+
+/** Options of {@link LightProbeVolume.add}. */
+export interface AddOptions {
+
+	/** Shade this object's irradiance per vertex instead of per pixel. Default false. */
+	perVertex?: boolean;
+
+	/** Probe light scale for this object's materials. Default 1. */
+	intensity?: number;
+
+}
+
+interface Lit {
+
+	object: Object3D;
+	hint: number;
+	sh: Float32Array;
+	uniforms: ProbeVolumeUniforms;
+	/** Meshes whose material was replaced by a patched clone, with the original to restore. */
+	replaced: { mesh: Mesh; original: Material | Material[] }[];
+	/** Materials patched in place (the user's, owned by this object alone). */
+	patched: Material[];
+	/** Patched clones made for this object (ours, disposed on remove). */
+	clones: Material[];
+
+}
+
+const _indices = new Uint32Array( 4 );
+const _weights = new Float32Array( 4 );
+let _warnedInstancing = false;
+
+/**
+ * Light probes placed anywhere, captured from the scene and blended per object every frame —
+ * the paper's pipeline in three.js. Probe positions are tetrahedralized (a planar triangulation
+ * when they all lie in one plane); each registered object finds the cell around it, blends its
+ * probes' SH with barycentric weights, and its patched `MeshStandardMaterial` shades
+ * E(n) = nᵀMn from them.
+ *
+ * ```js
+ * const volume = new LightProbeVolume( { positions } );
+ * await volume.capture( renderer, scene, { resolution: 32 } );
+ * volume.add( character );
+ * // each frame:
+ * volume.update();
+ * renderer.render( scene, camera );
+ * ```
+ */
+export class LightProbeVolume {
+
+	/** Probe positions, x, y, z per probe. */
+	readonly positions: Float64Array;
+
+	/** 27 floats per probe (three.js `SphericalHarmonics3` layout); `capture()` fills it. */
+	readonly sh: Float32Array;
+
+	/** Name per probe ('' when none was given). */
+	readonly names: string[];
+
+	/** Role per probe. */
+	readonly roles: ProbeRole[];
+
+	/** The tetrahedralization (or planar triangulation) of the probe positions. */
+	readonly interpolator: TetrahedralMesh | PlanarMesh;
+
+	private readonly lit: Lit[] = [];
+
+	/**
+	 * @param parameters See {@link LightProbeVolumeParameters}.
+	 */
+	constructor( parameters: LightProbeVolumeParameters ) {
+
+		if ( ! parameters || typeof parameters !== 'object' ) throw new TypeError( 'LightProbeVolume: expected { positions, sh?, names?, roles? }.' );
+		const count = assertPoints( 'LightProbeVolume', 'positions', parameters.positions, 1 );
+		this.positions = Float64Array.from( parameters.positions );
+		this.sh = new Float32Array( SH_FLOATS * count );
+		if ( parameters.sh !== undefined ) {
+
+			assertSH( 'LightProbeVolume', 'sh', parameters.sh, count );
+			this.sh.set( parameters.sh );
+
+		}
+
+		this.names = listOf( 'names', parameters.names, count, '' );
+		this.roles = listOf( 'roles', parameters.roles, count, 'fill' as ProbeRole );
+		this.roles.forEach( ( role, i ) => {
+
+			if ( ! ROLES.includes( role ) ) throw new RangeError( `LightProbeVolume: roles[${i}] is "${role}"; expected one of ${ROLES.join( ', ' )}.` );
+
+		} );
+
+		this.interpolator = createProbeInterpolator( this.positions );
+
+	}
+
+	/** Number of probes. */
+	get count(): number {
+
+		return this.positions.length / 3;
+
+	}
+
+	/**
+	 * Captures every probe from the scene on the GPU and fills {@link LightProbeVolume.sh}.
+	 * Registered objects are hidden while capturing. On a lost context the SH already held stay.
+	 */
+	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
+
+		const capturer = new ProbeCapturer( renderer, options );
+		try {
+
+			const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
+			await capturer.capture( scene, this.positions, this.sh, { ...options, exclude } );
+
+		} finally {
+
+			capturer.dispose();
+
+		}
+
+		return this;
+
+	}
+
+	/**
+	 * Writes the interpolated SH (27 floats) at a world position into `target` and returns it.
+	 * @param position `{ x, y, z }` (e.g. a `Vector3`) or `[ x, y, z ]`.
+	 */
+	sample( position: Vector3 | { x: number; y: number; z: number } | ArrayLike<number>, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
+
+		const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
+		if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) {
+
+			throw new RangeError( `LightProbeVolume.sample: position must be three finite numbers, got (${x}, ${y}, ${z}).` );
+
+		}
+
+		this.interpolator.interpolate( x, y, z, _indices, _weights );
+		return blendSH( _indices, _weights, this.sh, target, 4 );
+
+	}
+
+	/**
+	 * Lights an object (a mesh, or a group such as a loaded character: all its meshes) with this
+	 * volume: its `MeshStandardMaterial`s are patched, and `update()` sets their irradiance from
+	 * the probes around the object's world position. A material shared with an object lit
+	 * separately is cloned for this one (uniforms are per material).
+	 */
+	add( object: Object3D, options: AddOptions = {} ): this {
+
+		if ( ! object || ( object as { isObject3D?: boolean } ).isObject3D !== true ) throw new TypeError( 'LightProbeVolume.add: object must be a three.js Object3D.' );
+		if ( this.lit.some( ( entry ) => entry.object === object ) ) return this;
+
+		const entry: Lit = {
+			object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
+			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 } },
+			replaced: [], patched: [], clones: [],
+		};
+
+		const owned = new Set<Material>();
+		for ( const other of this.lit ) for ( const material of other.patched ) owned.add( material );
+
+		object.traverse( ( child ) => {
+
+			const mesh = child as Mesh & { isInstancedMesh?: boolean };
+			if ( ( mesh as { isMesh?: boolean } ).isMesh !== true ) return;
+			if ( mesh.isInstancedMesh === true && ! _warnedInstancing ) {
+
+				_warnedInstancing = true;
+				console.warn( 'LightProbeVolume.add: InstancedMesh is lit as one object, with the probes around its own origin; per-instance probe lighting is not supported yet.' );
+
+			}
+
+			const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
+			let replacement: Material[] | null = null;
+			materials.forEach( ( material, i ) => {
+
+				if ( ( material as { isMeshStandardMaterial?: boolean } ).isMeshStandardMaterial !== true ) return;
+				// Uniforms live on the material: one lit by another object (or patched by the user)
+				// gets a clone of its own.
+				if ( owned.has( material ) || ( getProbeVolumeUniforms( material ) !== null && ! entry.patched.includes( material ) ) ) {
+
+					const copy = material.clone();
+					patchMaterial( copy, { perVertex: options.perVertex, uniforms: entry.uniforms } );
+					replacement ??= materials.slice();
+					replacement[ i ] = copy;
+					entry.clones.push( copy );
+					return;
+
+				}
+
+				if ( ! entry.patched.includes( material ) ) {
+
+					patchMaterial( material, { perVertex: options.perVertex, uniforms: entry.uniforms } );
+					entry.patched.push( material );
+
+				}
+
+			} );
+
+			if ( replacement ) {
+
+				entry.replaced.push( { mesh, original: mesh.material } );
+				mesh.material = Array.isArray( mesh.material ) ? replacement : replacement[ 0 ];
+
+			}
+
+		} );
+
+		this.lit.push( entry );
+		this.updateEntry( entry );
+		return this;
+
+	}
+
+	/** Stops lighting an object: its materials are restored (clones made by `add()` are disposed). */
+	remove( object: Object3D ): this {
+
+		const index = this.lit.findIndex( ( entry ) => entry.object === object );
+		if ( index < 0 ) return this;
+		const [ entry ] = this.lit.splice( index, 1 );
+		for ( const { mesh, original } of entry.replaced ) mesh.material = original;
+		for ( const material of entry.patched ) unpatchMaterial( material );
+		for ( const material of entry.clones ) material.dispose();
+		return this;
+
+	}
+
+	/** The uniforms `update()` writes for a registered object, or null. */
+	getUniforms( object: Object3D ): ProbeVolumeUniforms | null {
+
+		return this.lit.find( ( entry ) => entry.object === object )?.uniforms ?? null;
+
+	}
+
+	/**
+	 * Once per frame, before rendering: locates every registered object (walking from last
+	 * frame's cell), blends its probes' SH and writes its irradiance matrices. Allocation-free.
+	 */
+	update(): void {
+
+		for ( let i = 0, n = this.lit.length; i < n; i ++ ) this.updateEntry( this.lit[ i ] );
+
+	}
+
+	private updateEntry( entry: Lit ): void {
+
+		const object = entry.object;
+		object.updateWorldMatrix( true, false );
+		const e = object.matrixWorld.elements;
+		entry.hint = this.interpolator.interpolate( e[ 12 ], e[ 13 ], e[ 14 ], _indices, _weights, entry.hint );
+		blendSH( _indices, _weights, this.sh, entry.sh, 4 );
+		irradianceMatrices( entry.sh, entry.uniforms.probeVolumeMatrices.value );
+
+	}
+
+	/** Unregisters every object (restoring their materials). The volume holds no GPU resources of its own. */
+	dispose(): void {
+
+		while ( this.lit.length > 0 ) this.remove( this.lit[ this.lit.length - 1 ].object );
+
+	}
+
+}
+
+function listOf<T>( name: string, values: readonly T[] | undefined, count: number, fallback: T ): T[] {
+
+	if ( values === undefined ) return new Array<T>( count ).fill( fallback );
+	assertArrayLike( 'LightProbeVolume', name, values as unknown );
+	if ( values.length !== count ) throw new RangeError( `LightProbeVolume: ${name} must have one entry per probe (${count}), got ${values.length}.` );
+	return Array.from( values );
+
+}
