@@ -1,0 +1,218 @@
+/**
+ * Probe lookup throughput: 10,000 objects move through a TetrahedralMesh; each frame every object
+ * is located (walking from its previous tetrahedron, or from tetrahedron 0 without hints), its
+ * barycentric weights computed and its 4 probes' SH blended. Moving the objects is not timed;
+ * the timed loop allocates nothing.
+ */
+
+import { gridPoints, mulberry32, randomPoints } from './datasets.js';
+import { loadOurs, whyMissing, type OurApi, type OurTetrahedralMesh } from './ours.js';
+import { summarize } from './stats.js';
+import type { BenchRow, Target } from './types.js';
+
+export const title = 'Probe lookup, 10,000 moving objects (M queries/s, higher is better)';
+
+export const notes = [
+	'One query = locate + barycentric + blendSH (27 floats from 4 probes), locate alone, or the per-frame API interpolate() (locate + clamped weights) + blendSH, where marked. Coherent: each object follows a smooth Lissajous path, moving about 0.4 % of the box per frame, and its hint is the tetrahedron it was in last frame; no hint: every walk starts at tetrahedron 0.',
+	'Each figure: queries / time of the timed loop, frames repeated until ≥ 0.5 s; median, min, max of 3 such measurements, one core. Target (printed, not asserted): ≥ 5 M/s with hints.',
+];
+
+const OBJECTS = 10_000;
+const MIN_MS = 500;
+const REPEATS = 3;
+const TARGET = 5; // M queries/s, coherent, with hints
+
+/** What one query does: locate alone, locate + barycentric + blendSH, or interpolate() + blendSH. */
+type Query = 'locate' | 'blend' | 'interpolate';
+type Mode = { subject: string, hinted: boolean, query: Query, target: boolean };
+
+const MODES: Mode[] = [
+	{ subject: 'ours, coherent, hint = previous', hinted: true, query: 'blend', target: true },
+	{ subject: 'ours, coherent, locate only', hinted: true, query: 'locate', target: false },
+	{ subject: 'ours, coherent, interpolate() + blendSH', hinted: true, query: 'interpolate', target: false },
+	{ subject: 'ours, no hint (0)', hinted: false, query: 'blend', target: false },
+];
+
+export async function run( log: ( message: string ) => void ): Promise<BenchRow[]> {
+
+	const meshes = [
+		{ name: '1k random probes', points: randomPoints( 'probes', 1000, 11 ).points },
+		{ name: 'grid 12x6x6 probes', points: gridPoints( 'probes', 12, 6, 6 ).points },
+	];
+
+	const ours = await loadOurs();
+	const missing = whyMissing( ours, [ 'TetrahedralMesh', 'blendSH' ] );
+	const rows: BenchRow[] = [];
+
+	for ( const { name, points } of meshes ) {
+
+		for ( const mode of MODES ) {
+
+			const row: BenchRow = { case: name, subject: mode.subject, unit: 'M queries/s', median: null, min: null, max: null, runs: 0 };
+			const target: Target = { text: `≥ ${TARGET} M/s` };
+			if ( mode.target ) row.targets = [ target ];
+			rows.push( row );
+			if ( missing || ( mode.query === 'interpolate' && ! ours.api.TetrahedralMesh?.prototype.interpolate ) ) {
+
+				row.status = missing ?? 'not available: TetrahedralMesh has no interpolate()';
+				continue;
+
+			}
+
+			log( `${name}: ${mode.subject} …` );
+			try {
+
+				const { rates, located, tetrahedra } = measure( ours.api as OurApi, points, mode );
+				Object.assign( row, summarize( rates ), { output: `${tetrahedra.toLocaleString( 'en-US' )} tetrahedra`, status: `${( located * 100 ).toFixed( 1 )} % located` } );
+				target.met = row.median! >= TARGET;
+
+			} catch ( error ) {
+
+				row.status = 'threw: ' + ( error as Error ).message.split( '\n' )[ 0 ];
+
+			}
+
+		}
+
+	}
+
+	return rows;
+
+}
+
+/** Per object: a Lissajous path inside the middle 70 % of the probes' bounding box. */
+class MovingObjects {
+
+	readonly positions = new Float64Array( OBJECTS * 3 );
+	private readonly center = new Float64Array( 3 );
+	private readonly amplitude = new Float64Array( 3 );
+	private readonly frequency = new Float64Array( OBJECTS * 3 );
+	private readonly phase = new Float64Array( OBJECTS * 3 );
+
+	constructor( probes: ArrayLike<number> ) {
+
+		for ( let axis = 0; axis < 3; axis ++ ) {
+
+			let min = Infinity, max = - Infinity;
+			for ( let i = axis; i < probes.length; i += 3 ) {
+
+				min = Math.min( min, probes[ i ] );
+				max = Math.max( max, probes[ i ] );
+
+			}
+
+			this.center[ axis ] = ( min + max ) / 2;
+			this.amplitude[ axis ] = 0.35 * ( max - min );
+
+		}
+
+		const random = mulberry32( 42 );
+		for ( let i = 0; i < OBJECTS * 3; i ++ ) {
+
+			this.frequency[ i ] = 0.5 + random();
+			this.phase[ i ] = 2 * Math.PI * random();
+
+		}
+
+	}
+
+	/** Positions at `frame`; consecutive frames are about 0.4 % of the box apart. */
+	moveTo( frame: number ): void {
+
+		const time = frame * 0.01;
+		for ( let i = 0; i < OBJECTS * 3; i ++ ) {
+
+			const axis = i % 3;
+			this.positions[ i ] = this.center[ axis ] + this.amplitude[ axis ] * Math.sin( this.frequency[ i ] * time + this.phase[ i ] );
+
+		}
+
+	}
+
+}
+
+function measure( api: OurApi, probes: Float64Array, mode: Mode ): { rates: number[], located: number, tetrahedra: number } {
+
+	const mesh = new api.TetrahedralMesh( probes );
+	const probeCount = probes.length / 3;
+	const random = mulberry32( 7 );
+	const probeSH = new Float32Array( 27 * probeCount ).map( () => random() );
+	const objects = new MovingObjects( probes );
+	const state = { hints: new Int32Array( OBJECTS ), indices: new Uint32Array( 4 ), weights: new Float32Array( 4 ), out: new Float32Array( 27 ), checksum: 0 };
+
+	// Start every object in its tetrahedron, as a running application would be.
+	let frame = 0;
+	objects.moveTo( frame ++ );
+	queryAll( api, mesh, objects.positions, probeSH, state, mode );
+
+	const rates: number[] = [];
+	let queries = 0, located = 0;
+	for ( let repeat = 0; repeat < REPEATS; repeat ++ ) {
+
+		let elapsed = 0, count = 0;
+		while ( elapsed < MIN_MS ) {
+
+			objects.moveTo( frame ++ );
+			const start = performance.now();
+			located += queryAll( api, mesh, objects.positions, probeSH, state, mode );
+			elapsed += performance.now() - start;
+			count += OBJECTS;
+
+		}
+
+		rates.push( count / elapsed / 1000 ); // queries per ms / 1000 = millions per second
+		queries += count;
+
+	}
+
+	if ( ! Number.isFinite( state.checksum ) ) throw new Error( 'blendSH produced a non-finite value' );
+	return { rates, located: located / queries, tetrahedra: mesh.tetrahedra.length / 4 };
+
+}
+
+/** One frame: every object located (and blended); returns how many were inside the mesh. */
+function queryAll( api: OurApi, mesh: OurTetrahedralMesh, positions: Float64Array, probeSH: Float32Array, state: { hints: Int32Array, indices: Uint32Array, weights: Float32Array, out: Float32Array, checksum: number }, mode: Mode ): number {
+
+	const { hints, indices, weights, out } = state;
+	const tetrahedra = mesh.tetrahedra;
+	const blendSH = api.blendSH;
+	const query = mode.query;
+	let located = 0, checksum = 0;
+
+	for ( let i = 0; i < OBJECTS; i ++ ) {
+
+		const x = positions[ 3 * i ], y = positions[ 3 * i + 1 ], z = positions[ 3 * i + 2 ];
+		const hint = mode.hinted ? hints[ i ] : 0;
+
+		if ( query === 'interpolate' ) {
+
+			// interpolate() answers outside the hull too (from the nearest hull face): every query counts.
+			hints[ i ] = mesh.interpolate!( x, y, z, indices, weights, hint );
+			blendSH( indices, weights, probeSH, out );
+			checksum += out[ 0 ];
+			located ++;
+			continue;
+
+		}
+
+		const t = mesh.locate( x, y, z, hint );
+		if ( t < 0 ) continue;
+
+		hints[ i ] = t;
+		located ++;
+		if ( query === 'locate' ) continue;
+
+		mesh.barycentric( t, x, y, z, weights );
+		indices[ 0 ] = tetrahedra[ 4 * t ];
+		indices[ 1 ] = tetrahedra[ 4 * t + 1 ];
+		indices[ 2 ] = tetrahedra[ 4 * t + 2 ];
+		indices[ 3 ] = tetrahedra[ 4 * t + 3 ];
+		blendSH( indices, weights, probeSH, out );
+		checksum += out[ 0 ];
+
+	}
+
+	state.checksum += checksum;
+	return located;
+
+}

@@ -1,0 +1,213 @@
+/**
+ * Tetrahedralization time on the same points, side by side: ours, CGAL (C++, if installed) and
+ * npm delaunay-triangulate (in a child process with a 60 s limit), with cheap checks of ours.
+ */
+
+import { mkdirSync } from 'node:fs';
+import { buildCgal, BUILD_DIR, cgalVersion, runCgal, type CgalResult } from './cgal.js';
+import { allDatasets, boxVolume, pointCount, writePointsFile, type Dataset } from './datasets.js';
+import { orientation, signedVolume } from './geometry.js';
+import { loadOurs, whyMissing, type Tetrahedralization } from './ours.js';
+import { runDelaunayTriangulate } from './peers/delaunayTriangulate.js';
+import { collectGarbage, summarize, timeRuns } from './stats.js';
+import type { BenchRow, Target } from './types.js';
+
+export const title = 'Tetrahedralization (ms, lower is better)';
+
+export const notes = [
+	'ours: median of several runs after warm-up calls (fewer runs for the big sets); CGAL: Delaunay_triangulation_3 with Epick, range insert (spatially sorted), timed inside C++, several runs in one process; delaunay-triangulate: one run in a child process, killed after 60 s, skipped on larger sets once it timed out.',
+	'ours is checked cheaply: exact orientation of every tetrahedron (none may be flat or inverted), mutual neighbors, volume sum = the grid\'s box (grids) or CGAL\'s hull volume (random sets), and for random sets (unique Delaunay) the same tetrahedron count as CGAL.',
+	'On a grid every cell is split into 5 or 6 tetrahedra, so counts may differ from CGAL on grids while both are valid; CGAL gives 6 per cell (1,650 for 12x6x6).',
+	'Targets are printed, not asserted: random 10k ≤ 250 ms, random 100k ≤ 1.0 s, grid 40³ ≤ 3 s and valid; within 1.5× of CGAL.',
+];
+
+/** Time targets for ours, in ms. */
+const TARGET_MS: Record<string, number> = { 'random 10k': 250, 'random 100k': 1000, 'grid 40³': 3000 };
+const TARGET_RATIO = 1.5;
+
+/** Relative tolerance of the volume check (float sums of up to ~400k tetrahedra). */
+const VOLUME_TOLERANCE = 1e-9;
+
+export async function run( log: ( message: string ) => void ): Promise<BenchRow[]> {
+
+	const ours = await loadOurs();
+	const oursMissing = whyMissing( ours, [ 'tetrahedralize' ] );
+	const cgal = await buildCgal( log );
+	const cgalName = `CGAL ${cgalVersion() ?? ''}`.trim();
+	mkdirSync( BUILD_DIR, { recursive: true } );
+
+	// CGAL and ours on every set first, then the slow peer, whose minute-long runs and killed
+	// child process would otherwise disturb the timings that follow them.
+	const measured = [];
+	for ( const dataset of allDatasets() ) {
+
+		const pointsFile = `${BUILD_DIR}points-${dataset.name.replace( '³', '3' ).replace( /\W+/g, '-' )}.f64`;
+		writePointsFile( pointsFile, dataset.points );
+		const { row: cgalRow, result: cgalResult } = await cgalRun( dataset, pointsFile, cgal, cgalName, log );
+		const oursTimed = oursRow( dataset, ours.api.tetrahedralize, oursMissing, cgalResult, cgalName, log );
+		measured.push( { dataset, pointsFile, cgalResult, rows: [ oursTimed, cgalRow ] } );
+
+	}
+
+	let timedOutAt = Infinity; // point count on which delaunay-triangulate timed out
+	for ( const { dataset, pointsFile, cgalResult, rows } of measured ) {
+
+		const row = await peerRow( dataset, pointsFile, cgalResult, timedOutAt, log );
+		if ( row.status?.startsWith( 'timeout' ) ) timedOutAt = pointCount( dataset );
+		rows.push( row );
+
+	}
+
+	return measured.flatMap( ( { rows } ) => rows );
+
+}
+
+/** CGAL, several runs in one process; its result also serves to check ours. */
+async function cgalRun( dataset: Dataset, pointsFile: string, cgal: { binary: string | null, reason: string }, subject: string, log: ( message: string ) => void ): Promise<{ row: BenchRow, result: CgalResult | null }> {
+
+	const row: BenchRow = { case: dataset.name, subject, unit: 'ms', median: null, min: null, max: null, runs: 0, status: cgal.reason };
+	if ( ! cgal.binary ) return { row, result: null };
+
+	log( `${dataset.name}: CGAL …` );
+	collectGarbage();
+	try {
+
+		const result = await runCgal( cgal.binary, pointsFile, pointCount( dataset ) > 20000 ? 5 : 9 );
+		Object.assign( row, summarize( result.seconds.map( ( s ) => s * 1000 ) ), { output: tetrahedraLabel( result.cells, dataset ), status: result.valid ? 'valid (is_valid)' : 'INVALID (is_valid)' } );
+		return { row, result };
+
+	} catch ( error ) {
+
+		row.status = 'failed: ' + ( error as Error ).message.split( '\n' )[ 0 ];
+		return { row, result: null };
+
+	}
+
+}
+
+/** npm delaunay-triangulate, one run in a child process; skipped from the set size it timed out on. */
+async function peerRow( dataset: Dataset, pointsFile: string, cgal: CgalResult | null, timedOutAt: number, log: ( message: string ) => void ): Promise<BenchRow> {
+
+	const row: BenchRow = { case: dataset.name, subject: 'delaunay-triangulate', unit: 'ms', median: null, min: null, max: null, runs: 0 };
+	if ( pointCount( dataset ) >= timedOutAt ) return { ...row, status: `skipped (timed out on ${timedOutAt.toLocaleString( 'en-US' )} points)` };
+
+	log( `${dataset.name}: delaunay-triangulate (child process, ≤ 60 s) …` );
+	const result = await runDelaunayTriangulate( pointsFile );
+	if ( ! result.ok ) return { ...row, status: result.reason };
+
+	const checks = [ `${result.flat} flat`, `${result.inverted} inverted`, ...compareWithHull( dataset, result.tetrahedra, result.volume, cgal ) ];
+	return { ...row, median: result.ms, min: result.ms, max: result.ms, runs: 1, output: tetrahedraLabel( result.tetrahedra, dataset ), status: checks.join( '; ' ) };
+
+}
+
+function oursRow( dataset: Dataset, tetrahedralize: ( ( points: ArrayLike<number> ) => Tetrahedralization ) | undefined, missing: string | null, cgal: CgalResult | null, cgalName: string, log: ( message: string ) => void ): BenchRow {
+
+	const targetMs = TARGET_MS[ dataset.name ];
+	const timeTarget: Target = { text: `≤ ${targetMs >= 1000 ? targetMs / 1000 + ' s' : targetMs + ' ms'}` };
+	const validTarget: Target = { text: 'valid' };
+	const ratioTarget: Target = { text: `≤ ${TARGET_RATIO}× CGAL` };
+	const targets = targetMs ? [ timeTarget, ...( dataset.grid ? [ validTarget ] : [] ), ratioTarget ] : [ ratioTarget ];
+	const row: BenchRow = { case: dataset.name, subject: 'ours', unit: 'ms', median: null, min: null, max: null, runs: 0, targets };
+	if ( ! tetrahedralize || missing ) return { ...row, status: missing ?? 'not available' };
+
+	log( `${dataset.name}: ours …` );
+	const count = pointCount( dataset );
+	let timed;
+	try {
+
+		timed = timeRuns( () => tetrahedralize( dataset.points ), count <= 2000 ? 15 : count <= 20000 ? 9 : 5, 8000 );
+
+	} catch ( error ) {
+
+		return { ...row, status: 'threw: ' + ( error as Error ).message.split( '\n' )[ 0 ] };
+
+	}
+
+	const { summary, result } = timed;
+	const tetrahedronCount = result.tetrahedra.length / 4;
+	const failures = check( dataset, result, cgal );
+	Object.assign( row, summary, { output: tetrahedraLabel( tetrahedronCount, dataset ), status: failures.length ? 'INVALID: ' + failures.join( '; ' ) : 'valid' } );
+
+	if ( cgal ) {
+
+		row.peer = cgalName;
+		row.ratio = summary.median / summarize( cgal.seconds.map( ( s ) => s * 1000 ) ).median;
+
+	}
+
+	timeTarget.met = summary.median <= targetMs;
+	validTarget.met = failures.length === 0;
+	if ( row.ratio !== undefined ) ratioTarget.met = row.ratio <= TARGET_RATIO;
+	return row;
+
+}
+
+/** Cheap checks of our output; returns what failed (empty when valid). */
+function check( dataset: Dataset, result: Tetrahedralization, cgal: CgalResult | null ): string[] {
+
+	const { points } = dataset;
+	const { tetrahedra, neighbors, duplicates } = result;
+	const count = tetrahedra.length / 4;
+	const failures: string[] = [];
+
+	let flat = 0, inverted = 0, volume = 0;
+	for ( let t = 0; t < count; t ++ ) {
+
+		const a = tetrahedra[ 4 * t ], b = tetrahedra[ 4 * t + 1 ], c = tetrahedra[ 4 * t + 2 ], d = tetrahedra[ 4 * t + 3 ];
+		const sign = orientation( points, a, b, c, d );
+		if ( sign === 0 ) flat ++;
+		else if ( sign < 0 ) inverted ++;
+		volume += signedVolume( points, a, b, c, d );
+
+	}
+
+	if ( flat ) failures.push( `${flat} flat` );
+	if ( inverted ) failures.push( `${inverted} inverted` );
+
+	let oneSided = 0;
+	for ( let t = 0; t < count; t ++ ) {
+
+		for ( let i = 0; i < 4; i ++ ) {
+
+			const n = neighbors[ 4 * t + i ];
+			if ( n < 0 ) continue;
+			if ( n >= count || ( neighbors[ 4 * n ] !== t && neighbors[ 4 * n + 1 ] !== t && neighbors[ 4 * n + 2 ] !== t && neighbors[ 4 * n + 3 ] !== t ) ) oneSided ++;
+
+		}
+
+	}
+
+	if ( oneSided ) failures.push( `${oneSided} neighbor links not mutual` );
+	if ( duplicates.length ) failures.push( `${duplicates.length} duplicates reported (the set has none)` );
+
+	return failures.concat( compareWithHull( dataset, count, volume, cgal ) );
+
+}
+
+/**
+ * The volume must fill the grid's box (grids) or CGAL's convex hull (random sets), and for random
+ * sets, in general position, the Delaunay tetrahedralization is unique: CGAL's count is the count.
+ */
+function compareWithHull( dataset: Dataset, count: number, volume: number, cgal: CgalResult | null ): string[] {
+
+	const failures: string[] = [];
+	const expectedVolume = dataset.grid ? boxVolume( dataset.points ) : cgal?.volume;
+	if ( expectedVolume !== undefined && Math.abs( volume - expectedVolume ) > VOLUME_TOLERANCE * expectedVolume ) {
+
+		failures.push( `volume ${volume.toPrecision( 10 )} ≠ ${dataset.grid ? 'box' : 'hull'} ${expectedVolume.toPrecision( 10 )}` );
+
+	}
+
+	if ( ! dataset.grid && cgal && cgal.cells !== count ) failures.push( `${count} tetrahedra ≠ CGAL's ${cgal.cells}` );
+	return failures;
+
+}
+
+function tetrahedraLabel( count: number, dataset: Dataset ): string {
+
+	const label = `${count.toLocaleString( 'en-US' )} tetrahedra`;
+	if ( ! dataset.grid ) return label;
+	const [ nx, ny, nz ] = dataset.grid;
+	return `${label} (${( count / ( ( nx - 1 ) * ( ny - 1 ) * ( nz - 1 ) ) ).toFixed( 2 )}/cell)`;
+
+}
