@@ -1,0 +1,69 @@
+import { existsSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { resolve } from 'node:path';
+import type { ViteDevServer } from 'vite';
+import type { Browser, Page } from 'puppeteer-core';
+
+/**
+ * Browser tests: a Vite dev server over the repository (so both examples/ and test/browser/pages/
+ * are reachable, with `three-capture-lighting` aliased to src/) and Debian's Chromium through
+ * puppeteer-core, WebGL2 on SwiftShader. `skipReason` is set when Chromium is missing.
+ */
+export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+export const browserSkipReason = existsSync( CHROMIUM ) ? '' : `no Chromium at ${CHROMIUM} (run scripts/setup.sh, or set CHROMIUM_PATH)`;
+
+const root = resolve( fileURLToPath( new URL( '../..', import.meta.url ) ) );
+
+export interface BrowserSession {
+
+	browser: Browser;
+	server: ViteDevServer;
+	baseUrl: string;
+	/** Opens a page, collecting console errors and page errors into `errors`. */
+	open( path: string, size?: { width: number; height: number } ): Promise<{ page: Page; errors: string[] }>;
+	close(): Promise<void>;
+
+}
+
+export async function startBrowser(): Promise<BrowserSession> {
+
+	const { createServer } = await import( 'vite' );
+	const server = await createServer( {
+		configFile: false,
+		root,
+		logLevel: 'error',
+		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ) } },
+		server: { host: '127.0.0.1', port: 0, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
+	} );
+	await server.listen();
+	const baseUrl = server.resolvedUrls!.local[ 0 ];
+
+	const { default: puppeteer } = await import( 'puppeteer-core' );
+	const browser = await puppeteer.launch( {
+		executablePath: CHROMIUM,
+		headless: true,
+		args: [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ],
+	} );
+
+	return {
+		browser, server, baseUrl,
+		async open( path, size = { width: 640, height: 360 } ) {
+
+			const page = await browser.newPage();
+			await page.setViewport( size );
+			const errors: string[] = [];
+			page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
+			page.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
+			await page.goto( baseUrl + path.replace( /^\//, '' ), { waitUntil: 'load' } );
+			return { page, errors };
+
+		},
+		async close() {
+
+			await browser.close();
+			await server.close();
+
+		},
+	};
+
+}
