@@ -2,6 +2,7 @@ import type { Material, Mesh, Object3D, Scene, Vector3, WebGLRenderer } from 'th
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
+import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
@@ -27,6 +28,13 @@ export interface LightProbeVolumeParameters {
 
 	/** Optional role per probe; default `'fill'`. */
 	roles?: readonly ProbeRole[];
+
+	/**
+	 * How positions are turned into weights. Default: a {@link TetrahedralMesh} of the positions
+	 * (a {@link PlanarMesh} when they are coplanar). Pass a {@link GridInterpolator} built over
+	 * the same positions for the paper's trilinear baseline.
+	 */
+	interpolator?: ProbeInterpolator;
 
 }
 
@@ -64,8 +72,9 @@ interface Lit {
 
 }
 
-const _indices = new Uint32Array( 4 );
-const _weights = new Float32Array( 4 );
+const MAX_WEIGHTS = 8;
+const _indices = new Uint32Array( MAX_WEIGHTS );
+const _weights = new Float32Array( MAX_WEIGHTS );
 let _warnedInstancing = false;
 
 /**
@@ -98,8 +107,8 @@ export class LightProbeVolume {
 	/** Role per probe. */
 	readonly roles: ProbeRole[];
 
-	/** The tetrahedralization (or planar triangulation) of the probe positions. */
-	readonly interpolator: TetrahedralMesh | PlanarMesh;
+	/** The tetrahedralization (or planar triangulation, or grid) that turns positions into weights. */
+	readonly interpolator: ProbeInterpolator;
 
 	private readonly lit: Lit[] = [];
 
@@ -127,7 +136,19 @@ export class LightProbeVolume {
 
 		} );
 
-		this.interpolator = createProbeInterpolator( this.positions );
+		if ( parameters.interpolator !== undefined ) {
+
+			const interpolator = parameters.interpolator;
+			if ( typeof interpolator?.interpolate !== 'function' ) throw new TypeError( 'LightProbeVolume: interpolator must implement ProbeInterpolator (interpolate, weightCount, probeCount).' );
+			if ( interpolator.probeCount !== count ) throw new RangeError( `LightProbeVolume: interpolator indexes ${interpolator.probeCount} probes but positions has ${count}.` );
+			if ( interpolator.weightCount > MAX_WEIGHTS ) throw new RangeError( `LightProbeVolume: interpolator.weightCount ${interpolator.weightCount} exceeds ${MAX_WEIGHTS}.` );
+			this.interpolator = interpolator;
+
+		} else {
+
+			this.interpolator = createProbeInterpolator( this.positions ) as TetrahedralMesh | PlanarMesh;
+
+		}
 
 	}
 
@@ -174,7 +195,7 @@ export class LightProbeVolume {
 		}
 
 		this.interpolator.interpolate( x, y, z, _indices, _weights );
-		return blendSH( _indices, _weights, this.sh, target, 4 );
+		return blendSH( _indices, _weights, this.sh, target, this.interpolator.weightCount );
 
 	}
 
@@ -287,7 +308,7 @@ export class LightProbeVolume {
 		object.updateWorldMatrix( true, false );
 		const e = object.matrixWorld.elements;
 		entry.hint = this.interpolator.interpolate( e[ 12 ], e[ 13 ], e[ 14 ], _indices, _weights, entry.hint );
-		blendSH( _indices, _weights, this.sh, entry.sh, 4 );
+		blendSH( _indices, _weights, this.sh, entry.sh, this.interpolator.weightCount );
 		irradianceMatrices( entry.sh, entry.uniforms.probeVolumeMatrices.value );
 
 	}
