@@ -1,14 +1,16 @@
 import { defineConfig } from 'vite';
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
+import { assetsPlugin } from './scripts/assetsPlugin.mjs';
 
 const root = fileURLToPath( new URL( '.', import.meta.url ) );
 
 // The examples import the library by its package name, as users do; here it resolves to src/.
 export default defineConfig( {
 	root: resolve( root, 'examples' ),
+	plugins: [ assetsPlugin() ],
 	resolve: {
-		alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ) },
+		alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) },
 	},
 	server: { host: '127.0.0.1', port: 5173, strictPort: false },
 	build: {
@@ -18,6 +20,9 @@ export default defineConfig( {
 			input: {
 				index: resolve( root, 'examples/index.html' ),
 				basic: resolve( root, 'examples/basic.html' ),
+				sponza: resolve( root, 'examples/sponza.html' ),
+				sibenik: resolve( root, 'examples/sibenik.html' ),
+				kyoto: resolve( root, 'examples/kyoto.html' ),
 			},
 		},
 	},

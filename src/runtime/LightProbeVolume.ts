@@ -44,6 +44,9 @@ export type LightProbeVolumeCaptureOptions = ProbeCaptureSettings & Omit<ProbeCa
 	/** More objects to hide during the capture; objects registered with `add()` are always hidden. */
 	exclude?: Iterable<Object3D>;
 
+	/** Capture only these probes (e.g. the one an artist just moved); the others keep their SH. */
+	indices?: ArrayLike<number>;
+
 };
 
 /** Options of {@link LightProbeVolume.add}. */
@@ -165,11 +168,36 @@ export class LightProbeVolume {
 	 */
 	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
 
+		const indices = options.indices;
+		let positions: ArrayLike<number> = this.positions;
+		if ( indices !== undefined ) {
+
+			assertArrayLike( 'LightProbeVolume.capture', 'options.indices', indices );
+			positions = Float64Array.from( { length: 3 * indices.length }, ( _, k ) => {
+
+				const index = indices[ Math.floor( k / 3 ) ];
+				if ( ! Number.isInteger( index ) || index < 0 || index >= this.count ) throw new RangeError( `LightProbeVolume.capture: options.indices holds ${index}, not a probe index (0..${this.count - 1}).` );
+				return this.positions[ 3 * index + ( k % 3 ) ];
+
+			} );
+			if ( indices.length === 0 ) return this;
+
+		}
+
 		const capturer = new ProbeCapturer( renderer, options );
 		try {
 
 			const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
-			await capturer.capture( scene, this.positions, this.sh, { ...options, exclude } );
+			if ( indices === undefined ) {
+
+				await capturer.capture( scene, positions, this.sh, { ...options, exclude } );
+
+			} else {
+
+				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * indices.length ), { ...options, exclude } );
+				for ( let k = 0; k < indices.length; k ++ ) this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * indices[ k ] );
+
+			}
 
 		} finally {
 
@@ -212,7 +240,7 @@ export class LightProbeVolume {
 
 		const entry: Lit = {
 			object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
-			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 } },
+			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 }, probeVolumeDirectScale: { value: 1 } },
 			replaced: [], patched: [], clones: [],
 		};
 

@@ -10,6 +10,12 @@ export interface ProbeVolumeUniforms {
 	/** Scale of the probe light on this material (the paper's blend into the diffuse term). Default 1. */
 	probeVolumeIntensity: { value: number };
 
+	/**
+	 * Scale of direct (punctual) light on this material. Default 1; 0 shows the probe light alone —
+	 * the paper's "indirect only" view, handy when placing probes.
+	 */
+	probeVolumeDirectScale: { value: number };
+
 }
 
 /** Options of {@link patchMaterial}. */
@@ -59,6 +65,7 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 	const uniforms: ProbeVolumeUniforms = options.uniforms ?? {
 		probeVolumeMatrices: { value: new Float32Array( 48 ) },
 		probeVolumeIntensity: { value: options.intensity ?? 1 },
+		probeVolumeDirectScale: { value: 1 },
 	};
 	const previous = { onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey };
 	const previousKey = target.customProgramCacheKey.bind( target );
@@ -68,6 +75,7 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 		previous.onBeforeCompile.call( this, shader, renderer );
 		shader.uniforms.probeVolumeMatrices = uniforms.probeVolumeMatrices;
 		shader.uniforms.probeVolumeIntensity = uniforms.probeVolumeIntensity;
+		shader.uniforms.probeVolumeDirectScale = uniforms.probeVolumeDirectScale;
 		injectProbeVolume( shader, perVertex );
 
 	};
@@ -104,6 +112,8 @@ export function unpatchMaterial( material: Material ): void {
 // and space (world normal, no π) as three's LightProbe term.
 const FRAGMENT_PIXEL = /* glsl */`
 #include <lights_fragment_begin>
+reflectedLight.directDiffuse *= probeVolumeDirectScale;
+reflectedLight.directSpecular *= probeVolumeDirectScale;
 #if defined( RE_IndirectDiffuse )
 	irradiance += probeVolumeIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
 #endif
@@ -111,6 +121,8 @@ const FRAGMENT_PIXEL = /* glsl */`
 
 const FRAGMENT_VERTEX = /* glsl */`
 #include <lights_fragment_begin>
+reflectedLight.directDiffuse *= probeVolumeDirectScale;
+reflectedLight.directSpecular *= probeVolumeDirectScale;
 #if defined( RE_IndirectDiffuse )
 	irradiance += vProbeVolumeIrradiance;
 #endif
@@ -137,13 +149,13 @@ function injectProbeVolume( shader: WebGLProgramParametersWithUniforms, perVerte
 			.replace( 'void main() {', `${probeVolumePars}\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {` )
 			.replace( '#include <defaultnormal_vertex>', VERTEX_VERTEX );
 		shader.fragmentShader = shader.fragmentShader
-			.replace( 'void main() {', 'varying vec3 vProbeVolumeIrradiance;\nvoid main() {' )
+			.replace( 'void main() {', 'uniform float probeVolumeDirectScale;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {' )
 			.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
 
 	} else {
 
 		shader.fragmentShader = shader.fragmentShader
-			.replace( 'void main() {', `${probeVolumePars}\nvoid main() {` )
+			.replace( 'void main() {', `${probeVolumePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
 			.replace( '#include <lights_fragment_begin>', FRAGMENT_PIXEL );
 
 	}

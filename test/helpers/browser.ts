@@ -3,6 +3,10 @@ import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import type { ViteDevServer } from 'vite';
 import type { Browser, Page } from 'puppeteer-core';
+import { assetsPlugin, assetsFolder } from '../../scripts/assetsPlugin.mjs';
+
+/** Where the third-party assets are looked for (CAPTURE_LIGHTING_ASSETS or ../shared/assets). */
+export const ASSETS: string = assetsFolder;
 
 /**
  * Browser tests: a Vite dev server over the repository (so both examples/ and test/browser/pages/
@@ -32,7 +36,8 @@ export async function startBrowser(): Promise<BrowserSession> {
 		configFile: false,
 		root,
 		logLevel: 'error',
-		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ) } },
+		plugins: [ assetsPlugin() ],
+		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
 		server: { host: '127.0.0.1', port: 0, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
 	} );
 	await server.listen();
