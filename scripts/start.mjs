@@ -51,7 +51,9 @@ async function checkPage( pageUrl ) {
 		page.on( 'pageerror', ( error ) => errors.push( error.message ) );
 		page.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
 		await page.goto( pageUrl, { waitUntil: 'load' } );
-		await page.waitForFunction( () => window.__ready === true, { timeout: 60_000 } );
+		await page.waitForFunction( () => window.__demo?.ready === true || ( window.__demo?.error ?? '' ) !== '', { timeout: 120_000 } );
+		const demo = await page.evaluate( () => ( { ...window.__demo, frameMs: undefined } ) );
+		if ( demo.error ) errors.push( `the page shows: ${demo.error}` );
 
 		// A rendered room has several distinct colours; a blank canvas has one.
 		const distinct = await page.evaluate( () => {
@@ -71,7 +73,8 @@ async function checkPage( pageUrl ) {
 		mkdirSync( 'test/output', { recursive: true } );
 		await page.screenshot( { path: 'test/output/basic.png' } );
 		const status = await page.$eval( '#status', ( element ) => element.textContent );
-		console.log( `start --check: ${pageUrl} rendered (${distinct} distinct colours; ${status}); screenshot test/output/basic.png` );
+		console.log( `start --check: ${pageUrl} rendered (${distinct} distinct colours; ${demo.probes} probes, ${demo.cells} cells, capture ${Math.round( demo.captureMs )} ms, character: ${demo.character}); screenshot test/output/basic.png` );
+		void status;
 		if ( errors.length > 0 ) throw new Error( `the page reported errors:\n  ${errors.join( '\n  ' )}` );
 		if ( distinct < 8 ) throw new Error( `the frame looks blank (${distinct} distinct colours)` );
 		return 0;

@@ -1,0 +1,549 @@
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { TransformControls } from 'three/addons/controls/TransformControls.js';
+import Stats from 'three/addons/libs/stats.module.js';
+import GUI from 'lil-gui';
+import {
+	GridInterpolator, LightProbeVolume, evaluateIrradiance, irradianceMatrices,
+	type TetrahedralMesh,
+} from 'three-capture-lighting';
+import { loadCharacter, type Character } from './character.js';
+import { Overlay } from './Overlay.js';
+import type { ProbeLayout } from '@scenes/layout.js';
+
+export type { ProbeLayout };
+
+/** What a scene page gives the demo. */
+export interface DemoOptions {
+
+	layouts: ProbeLayout[];
+	camera: { position: number[]; target: number[]; fov?: number; near?: number; far?: number };
+	/** The character's walk, a closed loop. */
+	path: THREE.Curve<THREE.Vector3>;
+	/** Character height in scene units. */
+	characterHeight: number;
+	/** Cube camera planes for the captures. */
+	capture: { near: number; far: number };
+	/** Builds the static scene into `app.scene` (async: may load assets). */
+	build( app: DemoApp ): Promise<void>;
+	/** Seconds per loop of the path. Default 30. */
+	loopSeconds?: number;
+
+}
+
+export type ViewMode = 'tetrahedral + diffuse' | 'indirect only' | 'direct + hemisphere';
+const VIEWS: ViewMode[] = [ 'tetrahedral + diffuse', 'indirect only', 'direct + hemisphere' ];
+const EDGES = [ [ 0, 1 ], [ 0, 2 ], [ 0, 3 ], [ 1, 2 ], [ 1, 3 ], [ 2, 3 ] ];
+
+/** State a page leaves on `window.__demo` for tests and benchmarks. */
+export interface DemoReport {
+
+	ready: boolean;
+	captureMs: number;
+	probes: number;
+	cells: number;
+	frameMs: number[];
+	character: 'fox' | 'fallback' | 'none';
+	error: string;
+
+}
+
+/**
+ * The frame shared by the paper's scene pages: renderer, camera and controls, a probe volume per
+ * layout captured on the GPU, the character walking its loop with optional extra spheres, probe
+ * markers shaded by their own SH, the tetrahedra as wireframe with the character's cell lit,
+ * view modes, live probe editing, and a lil-gui panel.
+ *
+ * Query parameters: `assets` (asset URL, default /assets/), `layout`, `interpolation`, `view`,
+ * `resolution`, `spheres` (extra probe-lit spheres), `t` (freeze time at t seconds), `hide=gui`.
+ */
+export class DemoApp {
+
+	readonly renderer: THREE.WebGLRenderer;
+	readonly scene = new THREE.Scene();
+	readonly camera: THREE.PerspectiveCamera;
+	readonly controls: OrbitControls;
+	readonly overlay = new Overlay();
+	readonly query = new URLSearchParams( location.search );
+	/** Base URL of the third-party assets. */
+	readonly assets: string;
+	/** Objects that must not appear in captures (markers, helpers, dynamic objects). */
+	readonly helpers = new THREE.Group();
+	readonly report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], character: 'none', error: '' };
+
+	readonly params = {
+		layout: '',
+		interpolation: 'tetrahedral' as 'tetrahedral' | 'trilinear',
+		view: 'tetrahedral + diffuse' as ViewMode,
+		resolution: 32,
+		showProbes: true,
+		showCells: false,
+		animate: true,
+		edit: false,
+	};
+
+	private readonly options: DemoOptions;
+	private layouts: ProbeLayout[];
+	private volume!: LightProbeVolume;
+	private trilinear: LightProbeVolume | null = null;
+	private character: Character | null = null;
+	private readonly spheres: THREE.Mesh[] = [];
+	private readonly markers = new THREE.Group();
+	private readonly wireframe = new THREE.LineSegments( new THREE.BufferGeometry(), new THREE.LineBasicMaterial( { color: 0xaaaaaa, transparent: true, opacity: 0.3 } ) );
+	private readonly current = new THREE.LineSegments( new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( new Float32Array( 36 ), 3 ) ), new THREE.LineBasicMaterial( { color: 0xffff00 } ) );
+	private readonly transform: TransformControls;
+	private readonly stats = new Stats();
+	private readonly timer = new THREE.Timer();
+	private readonly hemisphere = new Float32Array( 48 );
+	private selected = - 1;
+	private time = 0;
+	private fps = 0;
+	private capturing = false;
+	private gui: GUI | null = null;
+
+	constructor( options: DemoOptions ) {
+
+		this.options = options;
+		this.layouts = options.layouts.map( ( layout ) => ( { ...layout, positions: layout.positions.slice() } ) );
+		this.assets = this.query.get( 'assets' ) ?? '/assets/';
+		this.params.layout = this.query.get( 'layout' ) ?? this.layouts[ 0 ].name;
+		this.params.interpolation = this.query.get( 'interpolation' ) === 'trilinear' ? 'trilinear' : 'tetrahedral';
+		this.params.view = ( VIEWS as string[] ).includes( this.query.get( 'view' ) ?? '' ) ? this.query.get( 'view' ) as ViewMode : 'tetrahedral + diffuse';
+		this.params.resolution = Number( this.query.get( 'resolution' ) ?? 32 );
+
+		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
+		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
+		this.renderer.setSize( window.innerWidth, window.innerHeight );
+		this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
+		document.body.appendChild( this.renderer.domElement );
+		this.renderer.domElement.addEventListener( 'webglcontextlost', () => this.overlay.error( 'The WebGL context was lost; the probe SH are kept. Waiting for the browser to restore it…' ) );
+		this.renderer.domElement.addEventListener( 'webglcontextrestored', () => this.overlay.error( '' ) );
+
+		const { position, target, fov = 60, near = 0.05, far = 500 } = options.camera;
+		this.camera = new THREE.PerspectiveCamera( fov, window.innerWidth / window.innerHeight, near, far );
+		this.camera.position.fromArray( position );
+		this.controls = new OrbitControls( this.camera, this.renderer.domElement );
+		this.controls.target.fromArray( target );
+		this.controls.update();
+
+		this.transform = new TransformControls( this.camera, this.renderer.domElement );
+		this.transform.addEventListener( 'dragging-changed', ( event ) => {
+
+			this.controls.enabled = ! event.value;
+			if ( ! event.value ) this.moveSelectedProbe();
+
+		} );
+		this.helpers.add( this.markers, this.wireframe, this.current, this.transform.getHelper() );
+		this.scene.add( this.helpers );
+
+		// A sky/ground hemisphere as SH, for the paper's "direct + hemisphere" comparison view.
+		const hemisphereSH = new Float32Array( 27 );
+		const sky = [ 0.6, 0.7, 0.9 ], ground = [ 0.3, 0.25, 0.2 ];
+		for ( let c = 0; c < 3; c ++ ) {
+
+			hemisphereSH[ c ] = ( sky[ c ] + ground[ c ] ) * Math.sqrt( Math.PI );
+			hemisphereSH[ 3 + c ] = ( sky[ c ] - ground[ c ] ) * Math.sqrt( 3 * Math.PI ) / 2;
+
+		}
+
+		irradianceMatrices( hemisphereSH, this.hemisphere );
+		document.body.appendChild( this.stats.dom );
+		window.addEventListener( 'resize', () => this.resize() );
+		window.addEventListener( 'error', ( event ) => this.fail( event.message ) );
+		window.addEventListener( 'unhandledrejection', ( event ) => this.fail( String( event.reason?.message ?? event.reason ) ) );
+		this.renderer.domElement.addEventListener( 'pointerdown', ( event ) => this.pick( event ) );
+		Object.assign( window, { __demo: this.report } );
+
+	}
+
+	/** Builds the scene, loads the character, captures every probe and starts rendering. */
+	async start(): Promise<void> {
+
+		try {
+
+			this.overlay.progress( 'loading the scene…', 0 );
+			await this.options.build( this );
+			await this.addCharacter();
+			const spheres = Number( this.query.get( 'spheres' ) ?? 0 );
+			for ( let i = 0; i < spheres; i ++ ) this.addSphere( i, spheres );
+			this.createGui();
+			this.rebuildVolume();
+			await this.recapture();
+			this.renderer.setAnimationLoop( ( timestamp ) => this.frame( timestamp ) );
+
+		} catch ( error ) {
+
+			this.fail( ( error as Error ).message );
+			console.error( error );
+
+		}
+
+	}
+
+	/** Shows an error on the page (not only in the console) and records it for tests. */
+	fail( message: string ): void {
+
+		this.report.error = message;
+		this.overlay.error( message );
+
+	}
+
+	private async addCharacter(): Promise<void> {
+
+		this.character = await loadCharacter( this.assets + 'fox/Fox.glb', this.options.characterHeight );
+		this.report.character = this.character.kind;
+		if ( this.character.kind === 'fallback' ) this.overlay.notice( `Character asset not found at ${this.assets}fox/Fox.glb — showing a stand-in. ${this.character.reason}` );
+		this.scene.add( this.character.object );
+
+	}
+
+	private addSphere( i: number, count: number ): void {
+
+		const material = new THREE.MeshStandardMaterial( { color: new THREE.Color().setHSL( i / count, 0.3, 0.7 ), roughness: 0.6 } );
+		const sphere = new THREE.Mesh( new THREE.SphereGeometry( this.options.characterHeight * 0.25, 16, 8 ), material );
+		sphere.userData.phase = i / count;
+		this.spheres.push( sphere );
+		this.scene.add( sphere );
+
+	}
+
+	private get dynamicObjects(): THREE.Object3D[] {
+
+		return [ ...( this.character ? [ this.character.object ] : [] ), ...this.spheres ];
+
+	}
+
+	private get layout(): ProbeLayout {
+
+		return this.layouts.find( ( layout ) => layout.name === this.params.layout ) ?? this.layouts[ 0 ];
+
+	}
+
+	/** A new volume for the current layout, keeping the SH of probes that did not change. */
+	private rebuildVolume( sh?: Float32Array ): void {
+
+		const layout = this.layout;
+		for ( const object of this.dynamicObjects ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
+		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh } );
+		this.trilinear = null;
+		if ( layout.grid ) {
+
+			const grid = new GridInterpolator( layout.grid.min, layout.grid.max, layout.grid.counts );
+			this.trilinear = new LightProbeVolume( { positions: grid.positions, interpolator: grid, sh: this.volume.sh } );
+
+		}
+
+		if ( this.params.interpolation === 'trilinear' && ! this.trilinear ) this.params.interpolation = 'tetrahedral';
+		for ( const object of this.dynamicObjects ) this.activeVolume.add( object );
+		this.report.probes = this.volume.count;
+		this.gui?.controllersRecursive().forEach( ( c ) => c.updateDisplay() );
+
+	}
+
+	private get activeVolume(): LightProbeVolume {
+
+		return this.params.interpolation === 'trilinear' && this.trilinear ? this.trilinear : this.volume;
+
+	}
+
+	/** Captures all probes (or `indices`) at the current resolution, with a progress bar. */
+	async recapture( indices?: number[] ): Promise<void> {
+
+		if ( this.capturing ) return;
+		this.capturing = true;
+		const start = performance.now();
+		try {
+
+			await this.volume.capture( this.renderer, this.scene, {
+				resolution: this.params.resolution, near: this.options.capture.near, far: this.options.capture.far, indices,
+				exclude: [ this.helpers, ...this.dynamicObjects ],
+				onProgress: ( done, total ) => this.overlay.progress( `capturing ${done} / ${total} probes at ${this.params.resolution}²`, done / total ),
+			} );
+			if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
+			this.report.captureMs = performance.now() - start;
+			this.overlay.progress( '', 1 );
+			this.updateMarkers();
+
+		} finally {
+
+			this.capturing = false;
+
+		}
+
+	}
+
+	private createGui(): void {
+
+		if ( this.query.get( 'hide' ) === 'gui' ) return;
+		const gui = this.gui = new GUI();
+		const p = this.params;
+		gui.add( p, 'layout', this.layouts.map( ( layout ) => layout.name ) ).onChange( () => { this.rebuildVolume(); this.recapture(); } );
+		gui.add( p, 'interpolation', [ 'tetrahedral', 'trilinear' ] ).onChange( () => {
+
+			if ( p.interpolation === 'trilinear' && ! this.trilinear ) {
+
+				p.interpolation = 'tetrahedral';
+				this.overlay.notice( 'Trilinear interpolation needs a grid layout.' );
+
+			}
+
+			this.rebuildVolume( this.volume.sh );
+
+		} ).listen();
+		gui.add( p, 'view', VIEWS );
+		gui.add( p, 'resolution', [ 8, 16, 32, 64, 128 ] ).name( 'capture resolution' ).onChange( () => this.recapture() );
+		gui.add( { recapture: () => this.recapture() }, 'recapture' );
+		gui.add( p, 'showProbes' ).name( 'show probes' );
+		gui.add( p, 'showCells' ).name( 'show tetrahedra' );
+		gui.add( p, 'animate' );
+		const edit = gui.addFolder( 'edit probes' );
+		edit.add( p, 'edit' ).name( 'click a probe to move it' ).onChange( () => this.select( - 1 ) );
+		edit.add( { add: () => this.addProbe() }, 'add' ).name( 'add probe at target' );
+		edit.add( { remove: () => this.removeSelectedProbe() }, 'remove' ).name( 'delete selected probe' );
+		edit.add( { export: () => this.exportLayout() }, 'export' ).name( 'export layout JSON' );
+
+	}
+
+	private updateMarkers(): void {
+
+		for ( const marker of this.markers.children as THREE.Mesh[] ) { marker.geometry.dispose(); ( marker.material as THREE.Material ).dispose(); }
+		this.markers.clear();
+		const volume = this.volume;
+		const radius = this.options.characterHeight * 0.12;
+		const e = new Float32Array( 3 );
+		for ( let i = 0; i < volume.count; i ++ ) {
+
+			// A white diffuse ball lit by this probe alone: vertex colour E(n) / π, no other light.
+			const geometry = new THREE.SphereGeometry( radius, 12, 6 );
+			const normals = geometry.getAttribute( 'normal' );
+			const colors = new Float32Array( 3 * normals.count );
+			for ( let v = 0; v < normals.count; v ++ ) {
+
+				evaluateIrradiance( volume.sh, [ normals.getX( v ), normals.getY( v ), normals.getZ( v ) ], e, 27 * i );
+				colors.set( [ Math.max( 0, e[ 0 ] ) / Math.PI, Math.max( 0, e[ 1 ] ) / Math.PI, Math.max( 0, e[ 2 ] ) / Math.PI ], 3 * v );
+
+			}
+
+			geometry.setAttribute( 'color', new THREE.BufferAttribute( colors, 3 ) );
+			const marker = new THREE.Mesh( geometry, new THREE.MeshBasicMaterial( { vertexColors: true } ) );
+			marker.position.fromArray( volume.positions, 3 * i );
+			marker.userData.probe = i;
+			this.markers.add( marker );
+
+		}
+
+		const edges: number[] = [];
+		const mesh = volume.interpolator as TetrahedralMesh;
+		const cells = mesh.tetrahedra ?? ( volume.interpolator as unknown as { triangles: Uint32Array } ).triangles;
+		const stride = mesh.tetrahedra ? 4 : 3;
+		for ( let t = 0; t < cells.length / stride; t ++ ) {
+
+			for ( const [ a, b ] of EDGES ) {
+
+				if ( b >= stride ) continue;
+				for ( const k of [ a, b ] ) edges.push( ...volume.positions.subarray( 3 * cells[ stride * t + k ], 3 * cells[ stride * t + k ] + 3 ) );
+
+			}
+
+		}
+
+		this.wireframe.geometry.dispose();
+		this.wireframe.geometry = new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( edges, 3 ) );
+		this.report.cells = volume.interpolator.cellCount;
+
+	}
+
+	private frame( timestamp: number ): void {
+
+		this.timer.update( timestamp );
+		const delta = this.timer.getDelta();
+		const frozen = this.query.get( 't' );
+		this.time = frozen !== null ? Number( frozen ) : this.time + ( this.params.animate ? delta : 0 );
+		const start = performance.now();
+
+		this.moveDynamicObjects( delta );
+		const volume = this.activeVolume;
+		volume.update();
+		for ( const object of this.dynamicObjects ) {
+
+			const uniforms = volume.getUniforms( object );
+			if ( ! uniforms ) continue;
+			uniforms.probeVolumeDirectScale.value = this.params.view === 'indirect only' ? 0 : 1;
+			if ( this.params.view === 'direct + hemisphere' ) uniforms.probeVolumeMatrices.value.set( this.hemisphere );
+
+		}
+
+		this.markers.visible = this.params.showProbes;
+		this.wireframe.visible = this.current.visible = this.params.showCells;
+		if ( this.params.showCells ) this.highlightCharacterCell();
+
+		this.renderer.render( this.scene, this.camera );
+		this.stats.update();
+		this.report.frameMs.push( performance.now() - start );
+		if ( this.report.frameMs.length > 300 ) this.report.frameMs.shift();
+		if ( delta > 0 ) this.fps += ( 1 / delta - this.fps ) * 0.05;
+		this.overlay.status( `${this.params.layout} — ${this.params.interpolation}\n${volume.count} probes, ${volume.interpolator.cellCount} ${this.params.interpolation === 'trilinear' ? 'boxes' : 'cells'}\ncapture ${this.report.captureMs.toFixed( 0 )} ms at ${this.params.resolution}²\n${this.fps.toFixed( 0 )} fps` );
+		if ( ! this.report.ready && this.report.frameMs.length >= 5 ) this.report.ready = true;
+
+	}
+
+	private moveDynamicObjects( delta: number ): void {
+
+		const path = this.options.path, loop = this.options.loopSeconds ?? 30;
+		const u = ( ( this.time / loop ) % 1 + 1 ) % 1;
+		if ( this.character ) {
+
+			const object = this.character.object;
+			path.getPointAt( u, object.position );
+			const ahead = path.getPointAt( ( u + 0.001 ) % 1 );
+			object.lookAt( ahead.x, object.position.y, ahead.z );
+			this.character.mixer?.update( this.params.animate ? delta : 0 );
+
+		}
+
+		const h = this.options.characterHeight;
+		for ( const sphere of this.spheres ) {
+
+			const phase = sphere.userData.phase as number;
+			path.getPointAt( ( u + phase ) % 1, sphere.position );
+			sphere.position.y += h * ( 0.8 + 0.5 * Math.sin( this.time * 2 + phase * 40 ) );
+			sphere.position.x += h * Math.sin( phase * 97 );
+
+		}
+
+	}
+
+	private highlightCharacterCell(): void {
+
+		const mesh = this.volume.interpolator as TetrahedralMesh;
+		const attribute = this.current.geometry.getAttribute( 'position' ) as THREE.BufferAttribute;
+		const p = this.character?.object.position ?? new THREE.Vector3();
+		const cell = mesh.locate ? mesh.locate( p.x, p.y + this.options.characterHeight * 0.5, p.z ) : - 1;
+		let o = 0;
+		for ( const [ a, b ] of EDGES ) {
+
+			for ( const k of [ a, b ] ) {
+
+				const v = cell >= 0 ? 3 * mesh.tetrahedra[ 4 * cell + k ] : 0;
+				attribute.setXYZ( o ++, this.volume.positions[ v ], this.volume.positions[ v + 1 ], this.volume.positions[ v + 2 ] );
+
+			}
+
+		}
+
+		attribute.needsUpdate = true;
+		this.current.visible = cell >= 0;
+
+	}
+
+	// Editing ----------------------------------------------------------------------------------
+
+	private pick( event: PointerEvent ): void {
+
+		if ( ! this.params.edit || this.transform.dragging ) return;
+		const rect = this.renderer.domElement.getBoundingClientRect();
+		const pointer = new THREE.Vector2( ( ( event.clientX - rect.left ) / rect.width ) * 2 - 1, - ( ( event.clientY - rect.top ) / rect.height ) * 2 + 1 );
+		const raycaster = new THREE.Raycaster();
+		raycaster.setFromCamera( pointer, this.camera );
+		const hit = raycaster.intersectObjects( this.markers.children, false )[ 0 ];
+		if ( hit ) this.select( hit.object.userData.probe as number );
+
+	}
+
+	private select( index: number ): void {
+
+		this.selected = index;
+		const marker = this.markers.children.find( ( m ) => m.userData.probe === index );
+		if ( marker && this.params.edit ) this.transform.attach( marker ); else this.transform.detach();
+
+	}
+
+	/** After a drag: the tetrahedralization is rebuilt and the moved probe alone is captured again. */
+	private async moveSelectedProbe(): Promise<void> {
+
+		const index = this.selected;
+		const marker = this.markers.children.find( ( m ) => m.userData.probe === index );
+		if ( index < 0 || ! marker ) return;
+		const positions = this.layout.positions;
+		const previous = positions.slice( 3 * index, 3 * index + 3 );
+		marker.position.toArray( positions, 3 * index );
+		delete this.layout.grid; // no longer a regular grid
+		try {
+
+			this.rebuildVolume( this.volume.sh.slice() );
+
+		} catch ( error ) {
+
+			positions.splice( 3 * index, 3, ...previous );
+			this.overlay.notice( `Cannot move the probe there: ${( error as Error ).message}` );
+			this.rebuildVolume( this.volume.sh.slice() );
+
+		}
+
+		await this.recapture( [ index ] );
+		this.select( index );
+
+	}
+
+	private async addProbe(): Promise<void> {
+
+		const layout = this.layout;
+		const sh = new Float32Array( this.volume.sh.length + 27 );
+		sh.set( this.volume.sh );
+		layout.positions.push( ...this.controls.target.toArray() );
+		layout.names?.push( `probe ${layout.positions.length / 3}` );
+		layout.roles?.push( 'fill' );
+		delete layout.grid;
+		this.rebuildVolume( sh );
+		await this.recapture( [ this.volume.count - 1 ] );
+		this.select( this.volume.count - 1 );
+
+	}
+
+	private async removeSelectedProbe(): Promise<void> {
+
+		const index = this.selected, layout = this.layout;
+		if ( index < 0 ) { this.overlay.notice( 'Select a probe first (turn on editing and click one).' ); return; }
+		this.select( - 1 );
+		const sh = new Float32Array( this.volume.sh.length - 27 );
+		sh.set( this.volume.sh.subarray( 0, 27 * index ) );
+		sh.set( this.volume.sh.subarray( 27 * ( index + 1 ) ), 27 * index );
+		const saved = layout.positions.splice( 3 * index, 3 );
+		try {
+
+			layout.names?.splice( index, 1 );
+			layout.roles?.splice( index, 1 );
+			delete layout.grid;
+			this.rebuildVolume( sh );
+			this.updateMarkers();
+
+		} catch ( error ) {
+
+			layout.positions.splice( 3 * index, 0, ...saved );
+			this.overlay.notice( `Cannot delete that probe: ${( error as Error ).message}` );
+
+		}
+
+	}
+
+	private exportLayout(): void {
+
+		const { name, positions, names, roles } = this.layout;
+		const json = JSON.stringify( { name, positions: positions.map( ( v ) => Math.round( v * 1000 ) / 1000 ), names, roles }, null, '\t' );
+		const link = document.createElement( 'a' );
+		link.href = URL.createObjectURL( new Blob( [ json ], { type: 'application/json' } ) );
+		link.download = `${name.replace( /\W+/g, '-' )}.json`;
+		link.click();
+		URL.revokeObjectURL( link.href );
+
+	}
+
+	private resize(): void {
+
+		this.camera.aspect = window.innerWidth / window.innerHeight;
+		this.camera.updateProjectionMatrix();
+		this.renderer.setSize( window.innerWidth, window.innerHeight );
+
+	}
+
+}
