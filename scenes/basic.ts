@@ -5,17 +5,18 @@ import type { ProbeLayout } from './layout.js';
 
 /**
  * The paper's Basic scene: a 4 × 3 × 4 room with a red (−x), a green (+x) and a blue (−z) wall,
- * white floor, ceiling and front wall, lit by one warm lamp under the ceiling.
+ * grey floor, ceiling and front wall, lit by one warm lamp hanging in the middle.
  */
 export function createBasicRoom(): { room: THREE.Group; lamp: THREE.PointLight } {
 
 	const wall = ( color: number ) => new THREE.MeshStandardMaterial( { color, roughness: 0.9, side: THREE.BackSide } );
 	// BoxGeometry groups: +x, −x, +y, −y, +z, −z.
-	const box = new THREE.Mesh( new THREE.BoxGeometry( 4, 3, 4 ), [ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xffffff ), wall( 0xdddddd ), wall( 0xffffff ), wall( 0x2040e0 ) ] );
+	// Grey floor and ceiling, so the coloured walls dominate the bounce light, as in the paper's figures.
+	const box = new THREE.Mesh( new THREE.BoxGeometry( 4, 3, 4 ), [ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xaaaaaa ), wall( 0x888888 ), wall( 0xcccccc ), wall( 0x2040e0 ) ] );
 	box.position.y = 1.5;
 	box.name = 'room';
 	const lamp = new THREE.PointLight( 0xfff2e0, 12, 0, 2 );
-	lamp.position.set( 0.4, 2.6, 0.3 );
+	lamp.position.set( 0.2, 2.1, 0.3 );
 	const bulb = new THREE.Mesh( new THREE.SphereGeometry( 0.08 ), new THREE.MeshBasicMaterial( { color: 0xfff2e0 } ) );
 	bulb.position.copy( lamp.position );
 	const room = new THREE.Group();

@@ -55,7 +55,10 @@ export interface DemoReport {
  * view modes, live probe editing, and a lil-gui panel.
  *
  * Query parameters: `assets` (asset URL, default /assets/), `layout`, `interpolation`, `view`,
- * `resolution`, `spheres` (extra probe-lit spheres), `t` (freeze time at t seconds), `hide=gui`.
+ * `resolution`, `spheres` (extra probe-lit spheres), `t` (freeze time at t seconds), `hide=gui`
+ * (no panel, no stats), `probes=0` (hide the probe markers), `drop=name,name` (leave out the
+ * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
+ * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`.
  */
 export class DemoApp {
 
@@ -95,6 +98,7 @@ export class DemoApp {
 	private readonly stats = new Stats();
 	private readonly timer = new THREE.Timer();
 	private readonly hemisphere = new Float32Array( 48 );
+	private ball: THREE.Mesh | null = null;
 	private selected = - 1;
 	private time = 0;
 	private fps = 0;
@@ -104,17 +108,19 @@ export class DemoApp {
 	constructor( options: DemoOptions ) {
 
 		this.options = options;
-		this.layouts = options.layouts.map( ( layout ) => ( { ...layout, positions: layout.positions.slice() } ) );
+		this.layouts = options.layouts.map( ( layout ) => dropProbes( layout, ( this.query.get( 'drop' ) ?? '' ).split( ',' ).filter( Boolean ) ) );
 		this.assets = this.query.get( 'assets' ) ?? '/assets/';
 		this.params.layout = this.query.get( 'layout' ) ?? this.layouts[ 0 ].name;
 		this.params.interpolation = this.query.get( 'interpolation' ) === 'trilinear' ? 'trilinear' : 'tetrahedral';
 		this.params.view = ( VIEWS as string[] ).includes( this.query.get( 'view' ) ?? '' ) ? this.query.get( 'view' ) as ViewMode : 'tetrahedral + diffuse';
 		this.params.resolution = Number( this.query.get( 'resolution' ) ?? 32 );
+		this.params.showProbes = this.query.get( 'probes' ) !== '0';
 
 		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
 		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
 		this.renderer.setSize( window.innerWidth, window.innerHeight );
-		this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
+		// Filmic tone mapping for viewing; ?tonemapping=none keeps colour ratios for measurements.
+		this.renderer.toneMapping = this.query.get( 'tonemapping' ) === 'none' ? THREE.NoToneMapping : THREE.ACESFilmicToneMapping;
 		document.body.appendChild( this.renderer.domElement );
 		this.renderer.domElement.addEventListener( 'webglcontextlost', () => this.overlay.error( 'The WebGL context was lost; the probe SH are kept. Waiting for the browser to restore it…' ) );
 		this.renderer.domElement.addEventListener( 'webglcontextrestored', () => this.overlay.error( '' ) );
@@ -147,12 +153,13 @@ export class DemoApp {
 		}
 
 		irradianceMatrices( hemisphereSH, this.hemisphere );
-		document.body.appendChild( this.stats.dom );
+		if ( this.query.get( 'hide' ) !== 'gui' ) document.body.appendChild( this.stats.dom );
+		else document.body.classList.add( 'no-ui' ); // screenshots for tests: no text that changes
 		window.addEventListener( 'resize', () => this.resize() );
 		window.addEventListener( 'error', ( event ) => this.fail( event.message ) );
 		window.addEventListener( 'unhandledrejection', ( event ) => this.fail( String( event.reason?.message ?? event.reason ) ) );
 		this.renderer.domElement.addEventListener( 'pointerdown', ( event ) => this.pick( event ) );
-		Object.assign( window, { __demo: this.report } );
+		Object.assign( window, { __demo: this.report, __demoApp: this } );
 
 	}
 
@@ -163,9 +170,11 @@ export class DemoApp {
 
 			this.overlay.progress( 'loading the scene…', 0 );
 			await this.options.build( this );
-			await this.addCharacter();
+			if ( this.query.get( 'character' ) !== '0' ) await this.addCharacter();
 			const spheres = Number( this.query.get( 'spheres' ) ?? 0 );
 			for ( let i = 0; i < spheres; i ++ ) this.addSphere( i, spheres );
+			const ball = this.query.get( 'ball' );
+			if ( ball ) this.addBall( ball.split( ',' ).map( Number ) );
 			this.createGui();
 			this.rebuildVolume();
 			await this.recapture();
@@ -207,9 +216,27 @@ export class DemoApp {
 
 	}
 
+	/** A white, rough test ball that stays put: it shows the probe light at one point. */
+	private addBall( position: number[] ): void {
+
+		const ball = new THREE.Mesh( new THREE.SphereGeometry( this.options.characterHeight * 0.5, 48, 24 ), new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1 } ) );
+		ball.position.fromArray( position );
+		ball.name = 'test ball';
+		this.ball = ball;
+		this.scene.add( ball );
+
+	}
+
+	/** The test ball's box on screen in CSS pixels: [ left, top, right, bottom ] (for tests). */
+	ballScreenBox(): number[] {
+
+		return screenBox( this.ball ?? new THREE.Object3D(), this.camera, this.renderer.domElement );
+
+	}
+
 	private get dynamicObjects(): THREE.Object3D[] {
 
-		return [ ...( this.character ? [ this.character.object ] : [] ), ...this.spheres ];
+		return [ ...( this.character ? [ this.character.object ] : [] ), ...this.spheres, ...( this.ball ? [ this.ball ] : [] ) ];
 
 	}
 
@@ -397,7 +424,9 @@ export class DemoApp {
 			path.getPointAt( u, object.position );
 			const ahead = path.getPointAt( ( u + 0.001 ) % 1 );
 			object.lookAt( ahead.x, object.position.y, ahead.z );
-			this.character.mixer?.update( this.params.animate ? delta : 0 );
+			// A frozen time (?t=) poses the character deterministically, for screenshots.
+			if ( this.query.get( 't' ) !== null ) this.character.mixer?.setTime( this.time );
+			else this.character.mixer?.update( this.params.animate ? delta : 0 );
 
 		}
 
@@ -433,6 +462,13 @@ export class DemoApp {
 
 		attribute.needsUpdate = true;
 		this.current.visible = cell >= 0;
+
+	}
+
+	/** The character's box on screen in CSS pixels: [ left, top, right, bottom ] (for tests). */
+	characterScreenBox(): number[] {
+
+		return screenBox( this.character?.object ?? new THREE.Object3D(), this.camera, this.renderer.domElement );
 
 	}
 
@@ -545,5 +581,33 @@ export class DemoApp {
 		this.renderer.setSize( window.innerWidth, window.innerHeight );
 
 	}
+
+}
+
+/** A copy of the layout without the probes named in `names`. */
+function dropProbes( layout: ProbeLayout, names: string[] ): ProbeLayout {
+
+	const keep = ( _: unknown, i: number ) => ! names.includes( layout.names?.[ i ] ?? '' );
+	const positions = layout.positions.filter( ( _, k ) => keep( null, Math.floor( k / 3 ) ) );
+	if ( positions.length === layout.positions.length ) return { ...layout, positions: layout.positions.slice(), names: layout.names?.slice(), roles: layout.roles?.slice() };
+	return { name: layout.name, positions, names: layout.names?.filter( keep ), roles: layout.roles?.filter( keep ) };
+
+}
+
+/** An object's bounding box projected to the canvas, in CSS pixels: [ left, top, right, bottom ]. */
+function screenBox( object: THREE.Object3D, camera: THREE.Camera, canvas: HTMLCanvasElement ): number[] {
+
+	const box = new THREE.Box3().setFromObject( object );
+	const rect = canvas.getBoundingClientRect();
+	let left = Infinity, top = Infinity, right = - Infinity, bottom = - Infinity;
+	for ( let i = 0; i < 8; i ++ ) {
+
+		const corner = new THREE.Vector3( i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z ).project( camera );
+		const x = ( corner.x + 1 ) / 2 * rect.width, y = ( 1 - corner.y ) / 2 * rect.height;
+		left = Math.min( left, x ); right = Math.max( right, x ); top = Math.min( top, y ); bottom = Math.max( bottom, y );
+
+	}
+
+	return [ left, top, right, bottom ];
 
 }

@@ -15,6 +15,12 @@ import { SH_FLOATS } from '../validate.js';
  */
 export function projectEquirectToSHGPU( renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
 
+	if ( ! ( target instanceof Float32Array ) || target.length < SH_FLOATS ) {
+
+		throw new RangeError( `projectEquirectToSHGPU: target must be a Float32Array with room for ${SH_FLOATS} floats, got ${target instanceof Float32Array ? `length ${target.length}` : typeof target}.` );
+
+	}
+
 	const image = texture?.image as { width?: number; height?: number } | undefined;
 	const width = image?.width, height = image?.height;
 	if ( ! width || ! height ) {

@@ -1,4 +1,4 @@
-import type { Material, Mesh, Object3D, Scene, Vector3, WebGLRenderer } from 'three';
+import { Box3, Matrix4, Vector3 as Vector3Class, type Material, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
@@ -58,6 +58,12 @@ export interface AddOptions {
 	/** Probe light scale for this object's materials. Default 1. */
 	intensity?: number;
 
+	/**
+	 * Where the object samples the probes, in its local frame. Default: the centre of its bounding
+	 * box when added — a character's origin is usually at its feet, below the probes meant for it.
+	 */
+	anchor?: Vector3 | { x: number; y: number; z: number };
+
 }
 
 interface Lit {
@@ -72,6 +78,8 @@ interface Lit {
 	patched: Material[];
 	/** Patched clones made for this object (ours, disposed on remove). */
 	clones: Material[];
+	/** The point, in the object's local frame, where the probes are sampled. */
+	anchor: Float64Array;
 
 }
 
@@ -241,7 +249,7 @@ export class LightProbeVolume {
 		const entry: Lit = {
 			object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
 			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 }, probeVolumeDirectScale: { value: 1 } },
-			replaced: [], patched: [], clones: [],
+			replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor ),
 		};
 
 		const owned = new Set<Material>();
@@ -334,8 +342,11 @@ export class LightProbeVolume {
 
 		const object = entry.object;
 		object.updateWorldMatrix( true, false );
-		const e = object.matrixWorld.elements;
-		entry.hint = this.interpolator.interpolate( e[ 12 ], e[ 13 ], e[ 14 ], _indices, _weights, entry.hint );
+		const e = object.matrixWorld.elements, a = entry.anchor;
+		const x = e[ 0 ] * a[ 0 ] + e[ 4 ] * a[ 1 ] + e[ 8 ] * a[ 2 ] + e[ 12 ];
+		const y = e[ 1 ] * a[ 0 ] + e[ 5 ] * a[ 1 ] + e[ 9 ] * a[ 2 ] + e[ 13 ];
+		const z = e[ 2 ] * a[ 0 ] + e[ 6 ] * a[ 1 ] + e[ 10 ] * a[ 2 ] + e[ 14 ];
+		entry.hint = this.interpolator.interpolate( x, y, z, _indices, _weights, entry.hint );
 		blendSH( _indices, _weights, this.sh, entry.sh, this.interpolator.weightCount );
 		irradianceMatrices( entry.sh, entry.uniforms.probeVolumeMatrices.value );
 
@@ -347,6 +358,20 @@ export class LightProbeVolume {
 		while ( this.lit.length > 0 ) this.remove( this.lit[ this.lit.length - 1 ].object );
 
 	}
+
+}
+
+/** The centre of an object's bounding box in its own frame (or the given anchor). */
+function localBoundsCentre( object: Object3D, anchor?: { x: number; y: number; z: number } ): Float64Array {
+
+	if ( anchor ) return Float64Array.of( anchor.x, anchor.y, anchor.z );
+	object.updateWorldMatrix( true, true );
+	// A skinned mesh's bounds follow its bones, whose matrices stay zero until the first render.
+	object.traverse( ( child ) => ( child as SkinnedMesh ).skeleton?.update() );
+	const box = new Box3().setFromObject( object );
+	if ( box.isEmpty() ) return new Float64Array( 3 );
+	const centre = box.getCenter( new Vector3Class() ).applyMatrix4( new Matrix4().copy( object.matrixWorld ).invert() );
+	return Float64Array.of( centre.x, centre.y, centre.z );
 
 }
 

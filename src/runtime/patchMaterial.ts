@@ -68,7 +68,23 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 		probeVolumeDirectScale: { value: 1 },
 	};
 	const previous = { onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey };
-	const previousKey = target.customProgramCacheKey.bind( target );
+	// three's default key is onBeforeCompile.toString(): evaluate it with the user's hook in place,
+	// or every patched material would share the wrapper's text and one program.
+	const previousKey = () => {
+
+		const wrapper = target.onBeforeCompile;
+		target.onBeforeCompile = previous.onBeforeCompile;
+		try {
+
+			return previous.customProgramCacheKey.call( target );
+
+		} finally {
+
+			target.onBeforeCompile = wrapper;
+
+		}
+
+	};
 
 	target.onBeforeCompile = function ( shader: WebGLProgramParametersWithUniforms, renderer: WebGLRenderer ) {
 
@@ -82,7 +98,9 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 	target.customProgramCacheKey = () => `${previousKey()}|three-capture-lighting:1:${perVertex ? 'vertex' : 'pixel'}`;
 	target[ PATCHED ] = { uniforms, perVertex, ...previous };
-	target.needsUpdate = true;
+	// Release the compiled program: three keeps uniforms per material and program key, so a
+	// material patched again (new uniforms, same key) must be compiled afresh to pick them up.
+	target.dispose();
 	return uniforms;
 
 }
@@ -103,7 +121,7 @@ export function unpatchMaterial( material: Material ): void {
 	target.onBeforeCompile = patch.onBeforeCompile;
 	target.customProgramCacheKey = patch.customProgramCacheKey;
 	delete target[ PATCHED ];
-	target.needsUpdate = true;
+	target.dispose();
 
 }
 
