@@ -5,6 +5,11 @@ import { ASSETS, browserSkipReason, startBrowser, type BrowserSession } from '..
 import { compareWithGolden, readPNG } from '../helpers/images.js';
 
 /*
+ * Goldens (test/golden/pages/*.png), each looked at before it was accepted:
+ * - basic.png: red wall left (−x), blue at the back (−z), green right (+x), grey floor and ceiling;
+ *   the lamp's bulb in front of the blue wall; at t = 4 s the fox is a quarter of the way round
+ *   its loop (right of centre, towards the back), orange, lit from the lamp above.
+ *
  * The demo pages in a real browser (Chromium, WebGL2 on SwiftShader): each loads without console
  * errors, finishes its capture and renders a frame that is not blank; the view controls change the
  * picture in the direction they should; one reviewed screenshot per page is kept as a golden.
