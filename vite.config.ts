@@ -1,6 +1,7 @@
 import { defineConfig } from 'vite';
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
+import { existsSync } from 'node:fs';
 import { assetsPlugin } from './scripts/assetsPlugin.mjs';
 
 const root = fileURLToPath( new URL( '.', import.meta.url ) );
@@ -13,17 +14,14 @@ export default defineConfig( {
 		alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) },
 	},
 	server: { host: '127.0.0.1', port: 5173, strictPort: false },
+	optimizeDeps: { noDiscovery: true, include: [] },
 	build: {
 		outDir: resolve( root, 'dist-examples' ),
 		emptyOutDir: true,
 		rollupOptions: {
-			input: {
-				index: resolve( root, 'examples/index.html' ),
-				basic: resolve( root, 'examples/basic.html' ),
-				sponza: resolve( root, 'examples/sponza.html' ),
-				sibenik: resolve( root, 'examples/sibenik.html' ),
-				kyoto: resolve( root, 'examples/kyoto.html' ),
-			},
+			input: Object.fromEntries( [ 'index', 'basic', 'sponza', 'sibenik', 'kyoto' ]
+				.map( ( name ) => [ name, resolve( root, `examples/${name}.html` ) ] )
+				.filter( ( [ , path ] ) => existsSync( path ) ) ),
 		},
 	},
 } );

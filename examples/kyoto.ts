@@ -50,6 +50,7 @@ document.body.appendChild( labelRenderer.domElement );
 const stats = new Stats();
 document.body.appendChild( stats.dom );
 const table = document.createElement( 'div' );
+table.id = 'panoramas';
 table.style.cssText = 'position:absolute;top:52px;left:8px;padding:4px 6px;background:rgba(0,0,0,0.55);white-space:pre;font:11px/1.35 ui-monospace,monospace;color:#ddd;pointer-events:none';
 document.body.appendChild( table );
 
@@ -159,7 +160,7 @@ async function projectAll(): Promise<void> {
 	}
 
 	overlay.progress( '', 1 );
-	report.captureMs = performance.now() - start;
+	report.captureMs = warmupMs + [ ...panoramas.values() ].reduce( ( sum, p ) => sum + p.ms, 0 ); // GPU projection only, not loading
 
 }
 
@@ -177,7 +178,8 @@ function buildVolume(): void {
 	if ( ! ( volume.interpolator instanceof PlanarMesh ) ) throw new Error( 'Kyoto: the probes are expected on one plane (a flat map).' );
 	mesh = volume.interpolator;
 	hint = - 1;
-	for ( const object of lit ) volume.add( object );
+	// The fox samples on its vertical axis, so the highlighted triangle below is exactly the one used.
+	for ( const object of lit ) volume.add( object, object === fox ? { anchor: new THREE.Vector3( 0, FOX_HEIGHT / 2, 0 ) } : {} );
 	if ( mesh.duplicates.length > 0 ) overlay.notice( `${mesh.duplicates.length / 2} probe(s) at the same map point as another were merged (not used).` );
 	report.probes = volume.count;
 	report.cells = mesh.cellCount;
@@ -188,12 +190,17 @@ function buildVolume(): void {
 /** Probe balls shaded by their own SH (white diffuse: E(n)/π), drop lines, labels, and the triangles on the map. */
 function updateMarkers(): void {
 
-	markers.traverse( ( o ) => { if ( ( o as THREE.Mesh ).geometry ) ( o as THREE.Mesh ).geometry.dispose(); if ( o instanceof CSS2DObject ) o.element.remove(); } );
+	markers.traverse( ( o ) => {
+
+		if ( o instanceof THREE.Mesh || o instanceof THREE.LineSegments ) { o.geometry.dispose(); o.material.dispose(); }
+		if ( o instanceof CSS2DObject ) o.element.remove();
+
+	} );
 	markers.clear();
 	const { probes } = layout();
 	const e = new Float32Array( 3 ), drops: number[] = [];
 	const ringMaterial = { photo: new THREE.MeshBasicMaterial( { color: 0xffffff, toneMapped: false } ), dropped: new THREE.MeshBasicMaterial( { color: 0x66eeff, toneMapped: false } ) };
-	probes.forEach( ( p, i ) => {
+	for ( const p of probes ) {
 
 		const panorama = panoramas.get( p.panorama )!;
 		const geometry = new THREE.SphereGeometry( 0.4, 24, 12 );
@@ -227,9 +234,8 @@ function updateMarkers(): void {
 		ball.add( css );
 		markers.add( ball );
 		drops.push( p.at[ 0 ], 0, p.at[ 1 ], p.at[ 0 ], kyoto.height, p.at[ 1 ] );
-		void i;
 
-	} );
+	}
 
 	markers.add( new THREE.LineSegments( new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( drops, 3 ) ), new THREE.LineBasicMaterial( { color: 0x444444 } ) ) );
 
@@ -449,6 +455,7 @@ async function start(): Promise<void> {
 
 	} catch ( error ) {
 
+		overlay.progress( '', 1 );
 		fail( ( error as Error ).message );
 		console.error( error );
 

@@ -292,6 +292,24 @@ function bestFitAxes( p: Float64Array, indices: Uint32Array, origin: Float64Arra
 
 	const order = [ 0, 1, 2 ].sort( ( a, b ) => c[ 4 * a ] - c[ 4 * b ] );
 	const axes = new Float64Array( 9 );
+
+	// A plane facing a coordinate axis (a floor, a wall) gets exact unit axes: plane coordinates
+	// are then plain coordinate differences, so probes in a row stay exactly in a row and the 2D
+	// triangulation has no sliver triangles from rounding.
+	for ( let k = 0; k < 3; k ++ ) {
+
+		const normal = vectors[ 3 * k + order[ 0 ] ];
+		if ( Math.abs( normal ) > 1 - 1e-9 ) {
+
+			axes[ k ] = 1;
+			axes[ 3 + ( k + 1 ) % 3 ] = 1;
+			axes[ 6 + ( k + 2 ) % 3 ] = 1;
+			return axes;
+
+		}
+
+	}
+
 	for ( let k = 0; k < 3; k ++ ) for ( let a = 0; a < 3; a ++ ) axes[ 3 * k + a ] = vectors[ 3 * a + order[ k ] ];
 	// u × v = n keeps the plane coordinates right-handed.
 	const [ nx, ny, nz, ux, uy, uz ] = axes;

@@ -39,6 +39,9 @@ export async function startBrowser(): Promise<BrowserSession> {
 		plugins: [ assetsPlugin() ],
 		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
 		server: { host: '127.0.0.1', port: 0, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
+		// No dependency pre-bundling: every dependency is plain ESM, and a re-optimisation found
+		// mid-run would reload a page under test.
+		optimizeDeps: { noDiscovery: true, include: [] },
 	} );
 	await server.listen();
 	const baseUrl = server.resolvedUrls!.local[ 0 ];

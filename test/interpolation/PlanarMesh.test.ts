@@ -83,6 +83,26 @@ describe( 'PlanarMesh and createProbeInterpolator (coplanar layouts: a floor of 
 
 	} );
 
+	it( 'a floor grid with one probe added inside triangulates without sliver triangles (exact plane axes)', () => {
+
+		// 5x4 probes on y = 1.5 plus one inside: 21 points, 14 of them on the boundary, so a
+		// triangulation has 2·21 − 2 − 14 = 26 triangles, none of zero area. Rotated plane axes
+		// once bent the rows off their lines and delaunator added slivers along them.
+		const positions: number[] = [];
+		for ( let j = 0; j < 4; j ++ ) for ( let i = 0; i < 5; i ++ ) positions.push( i * 7.3 - 11, 1.5, j * 5.1 - 4 );
+		positions.push( 0.37, 1.5, 1.2 );
+		const mesh = new PlanarMesh( positions );
+		expect( mesh.cellCount ).toBe( 26 );
+		for ( let t = 0; t < mesh.cellCount; t ++ ) {
+
+			const [ a, b, c ] = [ 0, 1, 2 ].map( ( k ) => mesh.triangles[ 3 * t + k ] );
+			const area = Math.abs( ( positions[ 3 * b ] - positions[ 3 * a ] ) * ( positions[ 3 * c + 2 ] - positions[ 3 * a + 2 ] ) - ( positions[ 3 * c ] - positions[ 3 * a ] ) * ( positions[ 3 * b + 2 ] - positions[ 3 * a + 2 ] ) ) / 2;
+			expect( area ).toBeGreaterThan( 1 );
+
+		}
+
+	} );
+
 	it( 'rejects collinear and too few probes with a DegenerateInputError', () => {
 
 		expect( () => createProbeInterpolator( [ 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3 ] ) ).toThrow( /one line/ );
