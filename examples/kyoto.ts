@@ -48,7 +48,8 @@ labelRenderer.setSize( window.innerWidth, window.innerHeight );
 labelRenderer.domElement.style.cssText = 'position:absolute;top:0;left:0;pointer-events:none';
 document.body.appendChild( labelRenderer.domElement );
 const stats = new Stats();
-document.body.appendChild( stats.dom );
+// ?hide=gui: no panel, stats or text that changes from run to run (screenshots for tests).
+if ( query.get( 'hide' ) === 'gui' ) document.body.classList.add( 'no-ui' ); else document.body.appendChild( stats.dom );
 const table = document.createElement( 'div' );
 table.id = 'panoramas';
 table.style.cssText = 'position:absolute;top:52px;left:8px;padding:4px 6px;background:rgba(0,0,0,0.55);white-space:pre;font:11px/1.35 ui-monospace,monospace;color:#ddd;pointer-events:none';

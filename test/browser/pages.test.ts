@@ -9,6 +9,10 @@ import { compareWithGolden, readPNG } from '../helpers/images.js';
  * - basic.png: red wall left (−x), blue at the back (−z), green right (+x), grey floor and ceiling;
  *   the lamp's bulb in front of the blue wall; at t = 4 s the fox is a quarter of the way round
  *   its loop (right of centre, towards the back), orange, lit from the lamp above.
+ * - kyoto.png: the procedural street map seen from above at an angle with the 5x4 grid's 24
+ *   Delaunay triangles drawn on it; the fox near the far edge inside its highlighted (orange)
+ *   triangle; behind the map, the Potsdamer Platz photo as the background (the probe nearest the
+ *   fox uses it); probe markers hidden by probes=0.
  *
  * The demo pages in a real browser (Chromium, WebGL2 on SwiftShader): each loads without console
  * errors, finishes its capture and renders a frame that is not blank; the view controls change the
