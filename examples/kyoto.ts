@@ -28,7 +28,7 @@ const assets = query.get( 'assets' ) ?? '/assets/';
 const FOX_HEIGHT = 1.8, LOOP_SECONDS = 60;
 const frozen = query.get( 't' );
 
-const report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], character: 'none', error: '' };
+const report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', error: '' };
 const overlay = new Overlay();
 const layouts: KyotoLayout[] = structuredClone( kyoto.layouts );
 const panoramas = new Map<string, Panorama>();
@@ -286,9 +286,11 @@ async function addCharacterAndSpheres(): Promise<void> {
 	mixer = character.mixer;
 	scene.add( fox );
 	lit.push( fox );
-	for ( let i = 0; i < 3; i ++ ) {
+	// Three white spheres by default; ?spheres=N for a load test.
+	const count = Number( query.get( 'spheres' ) ?? 3 );
+	for ( let i = 0; i < count; i ++ ) {
 
-		const sphere = new THREE.Mesh( new THREE.SphereGeometry( 0.6, 32, 16 ), new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
+		const sphere = new THREE.Mesh( new THREE.SphereGeometry( 0.6, count > 10 ? 16 : 32, count > 10 ? 8 : 16 ), new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
 		spheres.push( sphere );
 		scene.add( sphere );
 		lit.push( sphere );
@@ -386,7 +388,7 @@ function frame( timestamp: number ): void {
 
 	spheres.forEach( ( sphere, i ) => {
 
-		kyotoPath.getPointAt( ( u + 0.975 - 0.025 * i ) % 1, sphere.position );
+		kyotoPath.getPointAt( ( ( u + 0.975 - 0.025 * i ) % 1 + 1 ) % 1, sphere.position );
 		sphere.position.y = 0.6;
 
 	} );
@@ -415,6 +417,8 @@ function frame( timestamp: number ): void {
 	stats.update();
 	report.frameMs.push( performance.now() - start );
 	if ( report.frameMs.length > 300 ) report.frameMs.shift();
+	if ( delta > 0 ) report.intervalMs.push( delta * 1000 );
+	if ( report.intervalMs.length > 300 ) report.intervalMs.shift();
 	if ( delta > 0 ) fps += ( 1 / delta - fps ) * 0.05;
 	const blend = ( inside ? [ 0, 1, 2 ] : [ 0, 1 ] ).map( ( k ) => `${probes[ indices[ k ] ].name} (${panoramas.get( probes[ indices[ k ] ].panorama )!.label}) ${weights[ k ].toFixed( 2 )}` ).join( ', ' );
 	overlay.status( `${params.layout} — 2D Delaunay (delaunator) on the map\n${volume!.count} probes, ${mesh!.cellCount} triangles\n` +
@@ -441,7 +445,7 @@ window.addEventListener( 'resize', () => {
 
 } );
 
-Object.assign( window, { __demo: report, __kyoto: { addPanorama, characterScreenBox, panoramas, camera, controls, get fox() { return fox; }, get volume() { return volume; } } } );
+Object.assign( window, { __demo: report, __kyoto: { addPanorama, characterScreenBox, layoutNames: () => layouts.map( ( l ) => l.name ), panoramas, camera, controls, get fox() { return fox; }, get volume() { return volume; } } } );
 
 async function start(): Promise<void> {
 

@@ -42,7 +42,10 @@ export interface DemoReport {
 	captureMs: number;
 	probes: number;
 	cells: number;
+	/** CPU time of the last frames' work (update + render call), ms. */
 	frameMs: number[];
+	/** Time between the last frames (what the user sees, GPU included), ms. */
+	intervalMs: number[];
 	character: 'fox' | 'fallback' | 'none';
 	error: string;
 
@@ -72,7 +75,7 @@ export class DemoApp {
 	readonly assets: string;
 	/** Objects that must not appear in captures (markers, helpers, dynamic objects). */
 	readonly helpers = new THREE.Group();
-	readonly report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], character: 'none', error: '' };
+	readonly report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', error: '' };
 
 	readonly params = {
 		layout: '',
@@ -408,6 +411,8 @@ export class DemoApp {
 		this.stats.update();
 		this.report.frameMs.push( performance.now() - start );
 		if ( this.report.frameMs.length > 300 ) this.report.frameMs.shift();
+		if ( delta > 0 ) this.report.intervalMs.push( delta * 1000 );
+		if ( this.report.intervalMs.length > 300 ) this.report.intervalMs.shift();
 		if ( delta > 0 ) this.fps += ( 1 / delta - this.fps ) * 0.05;
 		this.overlay.status( `${this.params.layout} — ${this.params.interpolation}\n${volume.count} probes, ${volume.interpolator.cellCount} ${this.params.interpolation === 'trilinear' ? 'boxes' : 'cells'}\ncapture ${this.report.captureMs.toFixed( 0 )} ms at ${this.params.resolution}²\n${this.fps.toFixed( 0 )} fps` );
 		if ( ! this.report.ready && this.report.frameMs.length >= 5 ) this.report.ready = true;
@@ -462,6 +467,13 @@ export class DemoApp {
 
 		attribute.needsUpdate = true;
 		this.current.visible = cell >= 0;
+
+	}
+
+	/** Names of the page's probe layouts (for tests and benchmarks). */
+	layoutNames(): string[] {
+
+		return this.layouts.map( ( layout ) => layout.name );
 
 	}
 
