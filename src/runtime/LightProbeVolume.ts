@@ -1,4 +1,4 @@
-import { Box3, Matrix4, Vector3 as Vector3Class, type Material, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
+import { Box3, Matrix4, Vector3 as Vector3Class, type Material, type Layers, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
@@ -46,6 +46,12 @@ export type LightProbeVolumeCaptureOptions = ProbeCaptureSettings & Omit<ProbeCa
 
 	/** Capture only these probes (e.g. the one an artist just moved); the others keep their SH. */
 	indices?: ArrayLike<number>;
+
+	/**
+	 * Settings per probe role, over the common ones: e.g. `{ sky: { far: 5000 }, bounce: { far: 20 } }`
+	 * (paper 3.4: sky, bounce and object-reflection captures need different ranges and layers).
+	 */
+	roles?: Partial<Record<ProbeRole, ProbeCaptureSettings & { layers?: Layers }>>;
 
 };
 
@@ -176,40 +182,58 @@ export class LightProbeVolume {
 	 */
 	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
 
-		const indices = options.indices;
-		let positions: ArrayLike<number> = this.positions;
-		if ( indices !== undefined ) {
+		const where = 'LightProbeVolume.capture';
+		let indices: number[];
+		if ( options.indices !== undefined ) {
 
-			assertArrayLike( 'LightProbeVolume.capture', 'options.indices', indices );
-			positions = Float64Array.from( { length: 3 * indices.length }, ( _, k ) => {
+			assertArrayLike( where, 'options.indices', options.indices );
+			indices = Array.from( options.indices );
+			indices.forEach( ( index ) => {
 
-				const index = indices[ Math.floor( k / 3 ) ];
-				if ( ! Number.isInteger( index ) || index < 0 || index >= this.count ) throw new RangeError( `LightProbeVolume.capture: options.indices holds ${index}, not a probe index (0..${this.count - 1}).` );
-				return this.positions[ 3 * index + ( k % 3 ) ];
+				if ( ! Number.isInteger( index ) || index < 0 || index >= this.count ) throw new RangeError( `${where}: options.indices holds ${index}, not a probe index (0..${this.count - 1}).` );
 
 			} );
-			if ( indices.length === 0 ) return this;
+
+		} else {
+
+			indices = Array.from( { length: this.count }, ( _, i ) => i );
 
 		}
 
-		const capturer = new ProbeCapturer( renderer, options );
-		try {
+		// Probes whose role has its own settings (paper 3.4: sky, bounce and reflection captures
+		// want different ranges and layers) are captured in their own pass.
+		const groups = new Map<string, number[]>();
+		for ( const index of indices ) {
 
-			const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
-			if ( indices === undefined ) {
+			const role = this.roles[ index ];
+			const key = options.roles?.[ role ] ? role : '';
+			groups.set( key, [ ...( groups.get( key ) ?? [] ), index ] );
 
-				await capturer.capture( scene, positions, this.sh, { ...options, exclude } );
+		}
 
-			} else {
+		const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
+		const total = indices.length;
+		let done = 0;
+		for ( const [ role, group ] of groups ) {
 
-				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * indices.length ), { ...options, exclude } );
-				for ( let k = 0; k < indices.length; k ++ ) this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * indices[ k ] );
+			const settings = { ...options, ...( role ? options.roles?.[ role as ProbeRole ] : {} ) };
+			const positions = new Float64Array( 3 * group.length );
+			group.forEach( ( index, k ) => positions.set( this.positions.subarray( 3 * index, 3 * index + 3 ), 3 * k ) );
+			const capturer = new ProbeCapturer( renderer, settings );
+			try {
+
+				const start = done;
+				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * group.length ), {
+					...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
+				} );
+				group.forEach( ( index, k ) => this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
+				done += group.length;
+
+			} finally {
+
+				capturer.dispose();
 
 			}
-
-		} finally {
-
-			capturer.dispose();
 
 		}
 
