@@ -1,6 +1,7 @@
-// First pass of the GPU SH projection of a cube map (paper 2.2): each fragment integrates one SH
-// coefficient k over one block of texels, on all six faces, as Σ L(ω)·Y_k(ω)·Ω(texel). The
-// output is a tiles × tiles grid per coefficient, 9 grids side by side, one row block per probe;
+// First pass of the GPU SH projection of a cube map (paper 2.2): each fragment integrates half of
+// the 9 SH coefficients (5 or 4) over one block of texels, on all six faces, as
+// Σ L(ω)·Y_k(ω)·Ω(texel), reading each texel once. The output is a tiles × tiles grid per half,
+// the two halves side by side, one row block per probe, in four float targets (shPack);
 // shReduce.frag.glsl then sums each grid down to one texel.
 precision highp float;
 precision highp int;
@@ -13,9 +14,8 @@ uniform int tiles;
 uniform int block;
 uniform int rowOffset;
 
-out vec4 fragColor;
-
 #include <shBasis>
+#include <shPack>
 
 // The direction through the centre of texel (s, t) of a face, s, t in (−1, 1): the inverse of the
 // OpenGL ES 3.0 cube map face selection (section 3.8.10), so texture() lands on that very texel.
@@ -33,14 +33,15 @@ vec3 faceDirection( const in int face, const in float s, const in float t ) {
 void main() {
 
 	ivec2 pixel = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
-	int k = pixel.x / tiles;
-	int x0 = ( pixel.x - k * tiles ) * block;
+	int half_ = pixel.x / tiles;
+	int x0 = ( pixel.x - half_ * tiles ) * block;
 	int y0 = pixel.y * block;
 	int x1 = min( x0 + block, size );
 	int y1 = min( y0 + block, size );
 	float texel = 2.0 / float( size );
 
-	vec3 sum = vec3( 0.0 );
+	vec3 sums[ 5 ] = vec3[ 5 ]( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) );
+	float y[ 5 ];
 	for ( int face = 0; face < 6; face ++ ) {
 
 		for ( int j = y0; j < y1; j ++ ) {
@@ -50,8 +51,9 @@ void main() {
 
 				float s = ( float( i ) + 0.5 ) * texel - 1.0;
 				vec3 direction = faceDirection( face, s, t );
-				float weight = texelFetch( solidAngles, ivec2( i, j ), 0 ).r * shBasis( k, normalize( direction ) );
-				sum += texture( cubeMap, direction ).rgb * weight;
+				vec3 radiance = texture( cubeMap, direction ).rgb * texelFetch( solidAngles, ivec2( i, j ), 0 ).r;
+				shBasisHalf( half_, normalize( direction ), y );
+				for ( int k = 0; k < 5; k ++ ) sums[ k ] += radiance * y[ k ];
 
 			}
 
@@ -59,6 +61,6 @@ void main() {
 
 	}
 
-	fragColor = vec4( sum, 0.0 );
+	writeSums( sums );
 
 }

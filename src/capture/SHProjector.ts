@@ -11,7 +11,13 @@ import { SH_FLOATS, assertInteger } from '../validate.js';
 // Rows of the projection target: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
 const MAX_ROWS = 4096;
 
-/** The grid of partial sums per coefficient and probe for a source of `size` texels per axis. */
+// The 9 coefficients are projected in two halves (0..4 and 5..8) of up to 15 floats, each packed
+// into four RGBA float planes: a fragment reads each texel of its block once for five
+// coefficients, instead of once per coefficient.
+const HALVES = 2;
+const PLANES = 4;
+
+/** The grid of partial sums per half and probe for a source of `size` texels per axis. */
 function tilesFor( size: number ): number {
 
 	// About 8 texels per block and axis; at most 16 × 16 tiles, so a reduction takes ≤ 2 passes.
@@ -21,11 +27,26 @@ function tilesFor( size: number ): number {
 
 }
 
+const multipleTargetSupport = new WeakMap<WebGLRenderer, boolean>();
+
+/** Options of {@link SHProjector}. */
+export interface SHProjectorOptions {
+
+	/**
+	 * Write the four planes in one draw with multiple render targets (default: when a quick
+	 * self-test on this renderer shows they work), or in four draws (`false`). headless-gl, for one,
+	 * accepts multiple targets but fills only the first.
+	 */
+	multipleTargets?: boolean;
+
+}
+
 /**
  * GPU projection of cube maps and panoramas onto SH9 (paper 2.2), batched: each source is
- * integrated into its own row block of a float target (one fragment per coefficient and block of
- * texels, exact texel solid angles), the blocks are summed by a logarithmic reduction (4 × 4 or
- * 2 × 2 per pass), and a whole batch ends in one read-back of 27 floats per probe.
+ * integrated into its own row block of four float planes (one fragment per half of the
+ * coefficients and block of texels, exact texel solid angles), the blocks are summed by a
+ * logarithmic reduction (4 × 4 or 2 × 2 per pass), and a whole batch ends in one small read-back
+ * per plane: 27 floats per probe in all.
  *
  * ```js
  * const projector = new SHProjector( renderer );
@@ -41,6 +62,9 @@ export class SHProjector {
 	/** The renderer whose context owns the targets. */
 	readonly renderer: WebGLRenderer;
 
+	/** Whether the planes are written in one draw (multiple render targets) or four. */
+	readonly multipleTargets: boolean;
+
 	private readonly scene = new Scene();
 	private readonly camera = new OrthographicCamera();
 	private readonly quad: Mesh;
@@ -48,33 +72,38 @@ export class SHProjector {
 	private readonly equirectMaterial: RawShaderMaterial;
 	private readonly reduceMaterial: RawShaderMaterial;
 	private readonly solidAngleTextures = new Map<string, DataTexture>();
-	private targets: WebGLRenderTarget[] = [];
-	private targetKey = '';
+	// levels[ l ][ p ]: the render target holding plane p at reduction level l (with multiple
+	// targets, one render target serves all four planes of a level).
+	private levels: WebGLRenderTarget[][] = [];
+	private levelTiles = 0;
 
 	private source: 'cube' | 'equirect' | null = null;
 	private tiles = 1;
 	private capacity = 0;
 	private count = 0;
-	private width = 0;
-	private height = 0;
 	private readBuffer = new Float32Array( 0 );
 
 	/**
 	 * @param renderer A WebGL2 renderer whose context can render to float targets (EXT_color_buffer_float).
+	 * @param options See {@link SHProjectorOptions}.
 	 */
-	constructor( renderer: WebGLRenderer ) {
+	constructor( renderer: WebGLRenderer, options: SHProjectorOptions = {} ) {
 
 		this.renderer = renderer;
+		this.multipleTargets = options.multipleTargets ?? SHProjector.supportsMultipleTargets( renderer );
+		const defines: Record<string, number> = this.multipleTargets ? {} : { SINGLE_TARGET: 1 };
 		const material = ( fragmentShader: string, uniforms: Record<string, { value: unknown }> ) => new RawShaderMaterial( {
-			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, depthTest: false, depthWrite: false,
+			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, defines, depthTest: false, depthWrite: false,
 		} );
 		this.cubeMaterial = material( shProjectCubeFrag, {
-			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, tiles: { value: 1 }, block: { value: 1 }, rowOffset: { value: 0 },
+			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, tiles: { value: 1 }, block: { value: 1 }, rowOffset: { value: 0 }, outputIndex: { value: 0 },
 		} );
 		this.equirectMaterial = material( shProjectEquirectFrag, {
-			panorama: { value: null }, size: { value: [ 0, 0 ] }, tiles: { value: 1 }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 },
+			panorama: { value: null }, size: { value: [ 0, 0 ] }, tiles: { value: 1 }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 }, outputIndex: { value: 0 },
 		} );
-		this.reduceMaterial = material( shReduceFrag, { source: { value: null }, factor: { value: 2 } } );
+		this.reduceMaterial = material( shReduceFrag, {
+			source0: { value: null }, source1: { value: null }, source2: { value: null }, source3: { value: null }, factor: { value: 2 },
+		} );
 		this.quad = new Mesh( new PlaneGeometry( 2, 2 ), this.cubeMaterial );
 		this.quad.frustumCulled = false;
 		this.scene.add( this.quad );
@@ -85,6 +114,56 @@ export class SHProjector {
 	static batchCapacity( size: number ): number {
 
 		return Math.floor( MAX_ROWS / tilesFor( size ) );
+
+	}
+
+	/**
+	 * Whether multiple render targets really work on this renderer: renders two constant outputs
+	 * into a tiny two-target float render target and reads the second back. Cached per renderer.
+	 */
+	static supportsMultipleTargets( renderer: WebGLRenderer ): boolean {
+
+		let supported = multipleTargetSupport.get( renderer );
+		if ( supported !== undefined ) return supported;
+
+		const target = new WebGLRenderTarget( 1, 1, { type: FloatType, count: 2, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter } );
+		const material = new RawShaderMaterial( {
+			glslVersion: GLSL3, vertexShader: fullscreenVert,
+			fragmentShader: 'precision highp float;\nlayout( location = 0 ) out vec4 a;\nlayout( location = 1 ) out vec4 b;\nvoid main() { a = vec4( 1.0 ); b = vec4( 2.0 ); }',
+		} );
+		const scene = new Scene();
+		const quad = new Mesh( new PlaneGeometry( 2, 2 ), material );
+		quad.frustumCulled = false;
+		scene.add( quad );
+		const previous = renderer.getRenderTarget();
+		const pixel = new Float32Array( 4 );
+		try {
+
+			renderer.setRenderTarget( target );
+			renderer.render( scene, new OrthographicCamera() );
+			renderer.readRenderTargetPixels( target, 0, 0, 1, 1, pixel, undefined, 1 );
+			// A GL error here means the draw was refused; drain the queue so it does not surface
+			// later as someone else's error.
+			const gl = renderer.getContext();
+			let errors = 0;
+			for ( let i = 0; i < 8 && gl.getError() !== gl.NO_ERROR; i ++ ) errors ++;
+			supported = pixel[ 0 ] === 2 && errors === 0;
+
+		} catch {
+
+			supported = false;
+
+		} finally {
+
+			renderer.setRenderTarget( previous );
+			target.dispose();
+			material.dispose();
+			quad.geometry.dispose();
+
+		}
+
+		multipleTargetSupport.set( renderer, supported );
+		return supported;
 
 	}
 
@@ -101,15 +180,12 @@ export class SHProjector {
 		const height = source === 'equirect' ? options.height ?? Math.max( 1, size >> 1 ) : size;
 		assertInteger( 'SHProjector.begin', 'height', height, 1, 1 << 14 );
 		const tiles = tilesFor( Math.min( size, height ) );
-		const capacity = Math.floor( MAX_ROWS / tiles );
-		assertInteger( 'SHProjector.begin', 'count', count, 1, capacity );
+		assertInteger( 'SHProjector.begin', 'count', count, 1, Math.floor( MAX_ROWS / tiles ) );
 
 		this.source = source;
 		this.tiles = tiles;
 		this.count = 0;
 		this.capacity = count;
-		this.width = size;
-		this.height = height;
 		this.ensureTargets( tiles, count );
 
 		if ( source === 'cube' ) {
@@ -146,9 +222,16 @@ export class SHProjector {
 		material.uniforms.rowOffset.value = this.count * this.tiles;
 		this.quad.material = material;
 
-		const target = this.targets[ 0 ];
-		target.viewport.set( 0, this.count * this.tiles, 9 * this.tiles, this.tiles );
-		this.draw( target );
+		const draws = this.multipleTargets ? 1 : PLANES;
+		for ( let plane = 0; plane < draws; plane ++ ) {
+
+			material.uniforms.outputIndex.value = plane;
+			const target = this.levels[ 0 ][ plane ];
+			target.viewport.set( 0, this.count * this.tiles, HALVES * this.tiles, this.tiles );
+			this.draw( target );
+
+		}
+
 		this.count ++;
 
 	}
@@ -167,36 +250,63 @@ export class SHProjector {
 
 		}
 
-		// Logarithmic reduction: tiles × tiles partial sums → 1 per coefficient and probe.
+		// Logarithmic reduction: tiles × tiles partial sums → 1 per half and probe.
 		let tiles = this.tiles, level = 0;
 		this.quad.material = this.reduceMaterial;
+		const uniforms = this.reduceMaterial.uniforms;
 		while ( tiles > 1 ) {
 
 			const factor = tiles % 4 === 0 ? 4 : 2;
 			tiles /= factor;
-			const source = this.targets[ level ], destination = this.targets[ level + 1 ];
-			this.reduceMaterial.uniforms.source.value = source.texture;
-			this.reduceMaterial.uniforms.factor.value = factor;
-			destination.viewport.set( 0, 0, 9 * tiles, count * tiles );
-			this.draw( destination );
+			uniforms.factor.value = factor;
+			const sources = this.levels[ level ], destinations = this.levels[ level + 1 ];
+			if ( this.multipleTargets ) {
+
+				for ( let plane = 0; plane < PLANES; plane ++ ) uniforms[ `source${plane}` ].value = sources[ 0 ].textures[ plane ];
+				destinations[ 0 ].viewport.set( 0, 0, HALVES * tiles, count * tiles );
+				this.draw( destinations[ 0 ] );
+
+			} else {
+
+				for ( let plane = 0; plane < PLANES; plane ++ ) {
+
+					uniforms.source0.value = sources[ plane ].texture;
+					destinations[ plane ].viewport.set( 0, 0, HALVES * tiles, count * tiles );
+					this.draw( destinations[ plane ] );
+
+				}
+
+			}
+
 			level ++;
 
 		}
 
-		const final = this.targets[ level ];
-		const floats = 9 * 4 * count;
-		if ( this.readBuffer.length < floats ) this.readBuffer = new Float32Array( floats );
-		const buffer = this.readBuffer.subarray( 0, floats );
-		this.renderer.readRenderTargetPixels( final, 0, 0, 9, count, buffer );
+		// Texel (half, probe) of plane p holds floats 4p..4p+3 of that half's 16; coefficient k of
+		// the half, channel c, is float 3k + c.
+		const final = this.levels[ level ];
+		const floats = HALVES * 4 * count;
+		if ( this.readBuffer.length < PLANES * floats ) this.readBuffer = new Float32Array( PLANES * floats );
+		for ( let plane = 0; plane < PLANES; plane ++ ) {
 
+			const buffer = this.readBuffer.subarray( plane * floats, ( plane + 1 ) * floats );
+			if ( this.multipleTargets ) this.renderer.readRenderTargetPixels( final[ 0 ], 0, 0, HALVES, count, buffer, undefined, plane );
+			else this.renderer.readRenderTargetPixels( final[ plane ], 0, 0, HALVES, count, buffer );
+
+		}
+
+		const buffer = this.readBuffer;
 		for ( let p = 0; p < count; p ++ ) {
 
-			for ( let k = 0; k < 9; k ++ ) {
+			for ( let half = 0; half < HALVES; half ++ ) {
 
-				const from = 4 * ( 9 * p + k ), to = offset + SH_FLOATS * p + 3 * k;
-				target[ to ] = buffer[ from ];
-				target[ to + 1 ] = buffer[ from + 1 ];
-				target[ to + 2 ] = buffer[ from + 2 ];
+				const texel = 4 * ( HALVES * p + half );
+				const first = 5 * half, coefficients = half === 0 ? 5 : 4;
+				for ( let f = 0; f < 3 * coefficients; f ++ ) {
+
+					target[ offset + SH_FLOATS * p + 3 * first + f ] = buffer[ ( f >> 2 ) * floats + texel + ( f & 3 ) ];
+
+				}
 
 			}
 
@@ -225,19 +335,29 @@ export class SHProjector {
 	/** Projection and reduction targets for `tiles` and `count`, reused while they are big enough. */
 	private ensureTargets( tiles: number, count: number ): void {
 
-		const rows = Math.min( MAX_ROWS / tiles, Math.max( count, 16 ) );
-		const key = `${tiles}:${rows}`;
-		const current = this.targets[ 0 ];
-		if ( current && this.targetKey.startsWith( `${tiles}:` ) && current.height >= count * tiles ) return;
+		const first = this.levels[ 0 ];
+		if ( first && this.levelTiles === tiles && first[ 0 ].height >= count * tiles ) return;
 
 		this.disposeTargets();
-		this.targetKey = key;
+		this.levelTiles = tiles;
+		const rows = Math.min( MAX_ROWS / tiles, Math.max( count, 16 ) );
+		const create = ( t: number ) => new WebGLRenderTarget( HALVES * t, rows * t, {
+			type: FloatType, format: RGBAFormat, minFilter: NearestFilter, magFilter: NearestFilter,
+			depthBuffer: false, stencilBuffer: false, generateMipmaps: false, count: this.multipleTargets ? PLANES : 1,
+		} );
 		for ( let t = tiles; ; ) {
 
-			this.targets.push( new WebGLRenderTarget( 9 * t, rows * t, {
-				type: FloatType, format: RGBAFormat, minFilter: NearestFilter, magFilter: NearestFilter,
-				depthBuffer: false, stencilBuffer: false, generateMipmaps: false,
-			} ) );
+			if ( this.multipleTargets ) {
+
+				const target = create( t );
+				this.levels.push( [ target, target, target, target ] );
+
+			} else {
+
+				this.levels.push( [ create( t ), create( t ), create( t ), create( t ) ] );
+
+			}
+
 			if ( t === 1 ) break;
 			t /= t % 4 === 0 ? 4 : 2;
 
@@ -279,9 +399,9 @@ export class SHProjector {
 
 	private disposeTargets(): void {
 
-		for ( const target of this.targets ) target.dispose();
-		this.targets = [];
-		this.targetKey = '';
+		for ( const level of this.levels ) for ( const target of new Set( level ) ) target.dispose();
+		this.levels = [];
+		this.levelTiles = 0;
 
 	}
 

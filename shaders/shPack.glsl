@@ -1,0 +1,34 @@
+// Five RGB sums packed into four RGBA outputs, 15 floats in order (coefficient-major, RGB):
+// the reduction adds outputs component-wise, so the packing survives it unchanged. Where multiple
+// render targets do not work (headless-gl), SINGLE_TARGET writes one of the four per draw.
+#ifdef SINGLE_TARGET
+
+uniform int outputIndex;
+layout( location = 0 ) out vec4 out0;
+
+void writeSums( const in vec3 s[ 5 ] ) {
+
+	if ( outputIndex == 0 ) out0 = vec4( s[ 0 ], s[ 1 ].r );
+	else if ( outputIndex == 1 ) out0 = vec4( s[ 1 ].gb, s[ 2 ].rg );
+	else if ( outputIndex == 2 ) out0 = vec4( s[ 2 ].b, s[ 3 ] );
+	else out0 = vec4( s[ 4 ], 0.0 );
+
+}
+
+#else
+
+layout( location = 0 ) out vec4 out0;
+layout( location = 1 ) out vec4 out1;
+layout( location = 2 ) out vec4 out2;
+layout( location = 3 ) out vec4 out3;
+
+void writeSums( const in vec3 s[ 5 ] ) {
+
+	out0 = vec4( s[ 0 ], s[ 1 ].r );
+	out1 = vec4( s[ 1 ].gb, s[ 2 ].rg );
+	out2 = vec4( s[ 2 ].b, s[ 3 ] );
+	out3 = vec4( s[ 4 ], 0.0 );
+
+}
+
+#endif
