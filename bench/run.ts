@@ -22,6 +22,8 @@ interface BenchReport {
 	seconds: number;
 	rows: BenchRow[];
 	error?: string;
+	/** When and on which revision this bench ran (a filtered run keeps the others' earlier results). */
+	measured?: string;
 }
 
 async function main(): Promise<void> {
@@ -62,6 +64,23 @@ async function main(): Promise<void> {
 	}
 
 	const totalSeconds = ( performance.now() - started ) / 1000;
+	const stamp = `${environment.date.slice( 0, 16 ).replace( 'T', ' ' )} UTC, ${environment.packages[ 'three-capture-lighting' ]}`;
+	for ( const bench of benches ) bench.measured = stamp;
+
+	// A filtered run (npm run bench -- capture) replaces only its own benches in the results.
+	if ( filters.length > 0 && existsSync( RESULTS_DIR + 'latest.json' ) ) {
+
+		const previous = JSON.parse( readFileSync( RESULTS_DIR + 'latest.json', 'utf8' ) ) as { benches?: BenchReport[] };
+		for ( const old of previous.benches ?? [] ) {
+
+			if ( ! benches.some( ( bench ) => bench.name === old.name ) ) benches.push( old );
+
+		}
+
+		benches.sort( ( a, b ) => a.name.localeCompare( b.name ) );
+
+	}
+
 	const results = { ...environment, filters, totalSeconds, benches };
 	const markdown = [ headerMarkdown( environment, filters, totalSeconds ), ...benches.map( benchMarkdown ) ].join( '\n' );
 
@@ -153,6 +172,7 @@ function headerMarkdown( environment: ReturnType<typeof describeEnvironment>, fi
 function benchMarkdown( report: BenchReport ): string {
 
 	const lines = [ `## ${report.title}`, '' ];
+	if ( report.measured ) lines.push( `Measured ${report.measured}.`, '' );
 	if ( report.error ) lines.push( `Failed: ${report.error}`, '' );
 
 	if ( report.rows.length ) {

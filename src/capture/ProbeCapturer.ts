@@ -72,6 +72,7 @@ export class ProbeCapturer {
 	readonly projector: SHProjector;
 
 	private readonly solidAngle: CubeSolidAngleMode;
+	private busy = false;
 
 	/**
 	 * @param renderer A WebGL2 renderer.
@@ -113,6 +114,9 @@ export class ProbeCapturer {
 
 		}
 
+		// One render target and one projection batch serve every call: overlapping captures would
+		// interleave their probes.
+		if ( this.busy ) throw new Error( 'ProbeCapturer.capture: a capture is already running on this capturer; await it first (or use a second ProbeCapturer).' );
 		const { renderer, cubeCamera, projector } = this;
 		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
 		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
@@ -121,10 +125,13 @@ export class ProbeCapturer {
 		// SH as they were.
 		const batch = SHProjector.batchCapacity( this.resolution );
 		const result = new Float32Array( SH_FLOATS * count );
-		let hidden = this.hide( scene, options );
+		let hidden: Object3D[] = [];
 		let lastYield = now();
+		this.busy = true;
 
 		try {
+
+			hidden = this.hide( scene, options );
 
 			scene.updateMatrixWorld();
 			for ( let start = 0; start < count; start += batch ) {
@@ -165,6 +172,7 @@ export class ProbeCapturer {
 			renderer.autoClear = autoClear;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
 			show( hidden );
+			this.busy = false;
 
 		}
 

@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
-import { LightProbeVolume } from '../../src/index.js';
+import { LightProbeVolume, ProbeCapturer } from '../../src/index.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 
 const ctx = await createHeadlessRenderer( 16, 16 );
@@ -8,6 +8,22 @@ const ctx = await createHeadlessRenderer( 16, 16 );
 describe.skipIf( ! ctx.renderer )( `capture settings per probe role${ctx.skipReason ? ' — SKIPPED: ' + ctx.skipReason : ''}`, () => {
 
 	afterAll( () => ctx.dispose() );
+
+	it( 'overlapping captures on one ProbeCapturer: the second is refused with a clear error, the first completes', async () => {
+
+		const scene = new THREE.Scene();
+		scene.add( new THREE.Mesh( new THREE.BoxGeometry( 20, 20, 20 ), new THREE.MeshBasicMaterial( { color: 0xffffff, side: THREE.BackSide } ) ) );
+		const capturer = new ProbeCapturer( ctx.renderer!, { resolution: 8 } );
+		// Enough probes that the first capture yields to the event loop before it is done.
+		const positions = new Float64Array( 3 * 400 ).map( ( _, i ) => ( i % 7 ) * 0.1 );
+		const first = capturer.capture( scene, positions, new Float32Array( 27 * 400 ) );
+		await expect( capturer.capture( scene, [ 0, 0, 0 ], new Float32Array( 27 ) ) ).rejects.toThrow( /already running/ );
+		const sh = await first;
+		expect( sh[ 27 * 399 ] ).toBeCloseTo( 2 * Math.sqrt( Math.PI ), 2 );
+		await expect( capturer.capture( scene, [ 0, 0, 0 ], new Float32Array( 27 ) ) ).resolves.toBeInstanceOf( Float32Array );
+		capturer.dispose();
+
+	} );
 
 	it( 'a role\'s own near/far and layers apply to its probes only; progress counts all probes', async () => {
 

@@ -1,0 +1,197 @@
+import { assertPoints, assertSH } from '../validate.js';
+import { evaluateIrradiance } from '../sh/irradiance.js';
+
+/**
+ * The 26 directions the error is measured in: from the centre of a 3×3×3 block of cubes to each of
+ * its 26 neighbours, normalised — the 6 axes, the 12 edge diagonals and the 8 corner diagonals.
+ * They sample the sphere evenly enough for order-2 SH irradiance (a quadratic in n) and include
+ * the axis directions that floors and walls face.
+ */
+export const IRRADIANCE_ERROR_NORMALS: Float64Array = ( () => {
+
+	const out: number[] = [];
+	for ( let z = - 1; z <= 1; z ++ ) for ( let y = - 1; y <= 1; y ++ ) for ( let x = - 1; x <= 1; x ++ ) {
+
+		if ( x === 0 && y === 0 && z === 0 ) continue;
+		const length = Math.sqrt( x * x + y * y + z * z );
+		out.push( x / length, y / length, z / length );
+
+	}
+
+	return Float64Array.from( out );
+
+} )();
+
+/** Summary of an irradiance error over points (see {@link irradianceError}). */
+export interface IrradianceErrorSummary {
+
+	/** Mean of the per-point errors. */
+	mean: number;
+
+	/** 95th percentile of the per-point errors (nearest rank). */
+	p95: number;
+
+	/** Largest per-point error. */
+	max: number;
+
+}
+
+/** {@link IrradianceErrorSummary} plus the error of each point. */
+export interface IrradianceErrorResult extends IrradianceErrorSummary {
+
+	/** Error of each point, in point order. */
+	perPoint: Float64Array;
+
+	/** The normaliser: mean true irradiance over all points, normals and colour channels. */
+	meanIrradiance: number;
+
+}
+
+/**
+ * The one error measure of probe layouts in this library: how far predicted irradiance is from
+ * the truth, relative to the scene's mean irradiance. For point p,
+ *
+ *     error_p = (1/K) Σ_k max_c | E_pred,c(p, n_k) − E_true,c(p, n_k) |  /  Ē
+ *     Ē = mean over all points, all K normals and the 3 channels of E_true,c(p, n_k)
+ *
+ * with E(n) the Ramamoorthi–Hanrahan irradiance of the SH9 (`evaluateIrradiance`, what a
+ * Lambertian surface facing n receives) and n_k the {@link IRRADIANCE_ERROR_NORMALS} by default.
+ * Reported: mean, 95th percentile and max over points; 0.05 means "off by 5 % of the average
+ * irradiance".
+ *
+ * Why these choices:
+ * - **Irradiance, not SH coefficients**: what a diffuse surface shows; coefficient differences
+ *   weigh the L2 band (which irradiance attenuates to a quarter) as much as L0.
+ * - **Max over RGB**: luminance weighting would count a blue error 10× less than a green one
+ *   (0.07 vs 0.72), hiding exactly the colour bleeding the paper places probes for; the max
+ *   catches a wrong tint in any channel.
+ * - **One global normaliser Ē** (not each point's own brightness): a dark corner's error is judged
+ *   against the scene's light level, as the eye sees it next to the lit parts, instead of blowing
+ *   up as its own irradiance goes to 0.
+ * - **Mean over normals**: an object shows all its sides; a single bad direction still counts
+ *   1/26 per point and dominates `max`.
+ *
+ * `reduceProbes` uses exactly this measure (through {@link irradianceAtNormals} and
+ * {@link irradianceErrorFromTables}).
+ * @param predictedSH 27 floats per point, e.g. the layout's interpolation at each dense probe.
+ * @param trueSH 27 floats per point, the same count: the captured truth.
+ * @param normals Directions, x, y, z each, unit length (default {@link IRRADIANCE_ERROR_NORMALS}).
+ */
+export function irradianceError( predictedSH: ArrayLike<number>, trueSH: ArrayLike<number>, normals: ArrayLike<number> = IRRADIANCE_ERROR_NORMALS ): IrradianceErrorResult {
+
+	const where = 'irradianceError';
+	const count = assertSH( where, 'trueSH', trueSH );
+	assertSH( where, 'predictedSH', predictedSH, count );
+	assertPoints( where, 'normals', normals, 1 );
+	const truth = irradianceAtNormals( trueSH, normals );
+	const predicted = irradianceAtNormals( predictedSH, normals );
+	return irradianceErrorFromTables( predicted, truth, normals.length / 3, where );
+
+}
+
+/**
+ * Irradiance of every probe in every direction: `out[3 · (K · p + k) + c]` is channel c of
+ * E(n_k) for probe p (K = number of normals). Irradiance is linear in the SH, so the table of a
+ * blend is the same blend of the tables: `reduceProbes` interpolates these instead of SH.
+ * @param sh 27 floats per probe.
+ * @param normals Directions, x, y, z each.
+ */
+export function irradianceAtNormals( sh: ArrayLike<number>, normals: ArrayLike<number> ): Float64Array {
+
+	const count = sh.length / 27, directions = normals.length / 3;
+	const out = new Float64Array( 3 * directions * count );
+	const value = new Float64Array( 3 ), normal = new Float64Array( 3 );
+	for ( let p = 0; p < count; p ++ ) {
+
+		for ( let k = 0; k < directions; k ++ ) {
+
+			normal[ 0 ] = normals[ 3 * k ]; normal[ 1 ] = normals[ 3 * k + 1 ]; normal[ 2 ] = normals[ 3 * k + 2 ];
+			evaluateIrradiance( sh, normal, value, 27 * p );
+			const o = 3 * ( directions * p + k );
+			out[ o ] = value[ 0 ]; out[ o + 1 ] = value[ 1 ]; out[ o + 2 ] = value[ 2 ];
+
+		}
+
+	}
+
+	return out;
+
+}
+
+/**
+ * {@link irradianceError} from irradiance tables (as made by {@link irradianceAtNormals}): the
+ * shared arithmetic, so every caller measures the same thing.
+ * @param predicted Predicted irradiance table.
+ * @param truth True irradiance table, same layout and length.
+ * @param directions Number of normals K the tables were made with.
+ * @param where Function name for error messages.
+ */
+export function irradianceErrorFromTables( predicted: ArrayLike<number>, truth: ArrayLike<number>, directions: number, where = 'irradianceErrorFromTables' ): IrradianceErrorResult {
+
+	const { meanIrradiance, scale } = irradianceErrorScale( truth, directions, where );
+	const count = truth.length / ( 3 * directions );
+	const perPoint = new Float64Array( count );
+	for ( let p = 0; p < count; p ++ ) perPoint[ p ] = pointIrradianceError( predicted, 3 * directions * p, truth, 3 * directions * p, directions, scale );
+	return { ...summarizeErrors( perPoint ), perPoint, meanIrradiance };
+
+}
+
+/**
+ * One point's error from its rows of two irradiance tables: Σ_k max_c |predicted − truth| · scale,
+ * with `scale = 1 / (K · Ē)` (see {@link irradianceError}). Shared by every caller so the
+ * arithmetic is the same everywhere.
+ * @param predicted Table holding the point's predicted row at `predictedOffset` (3 · K floats).
+ * @param truth Table holding its true row at `truthOffset`.
+ * @param directions K, the number of normals.
+ * @param scale 1 / (K · mean true irradiance).
+ */
+export function pointIrradianceError( predicted: ArrayLike<number>, predictedOffset: number, truth: ArrayLike<number>, truthOffset: number, directions: number, scale: number ): number {
+
+	let sum = 0;
+	for ( let k = 0; k < 3 * directions; k += 3 ) {
+
+		const a = predictedOffset + k, b = truthOffset + k;
+		const r = Math.abs( predicted[ a ] - truth[ b ] ), g = Math.abs( predicted[ a + 1 ] - truth[ b + 1 ] ), bl = Math.abs( predicted[ a + 2 ] - truth[ b + 2 ] );
+		sum += r > g ? ( r > bl ? r : bl ) : ( g > bl ? g : bl );
+
+	}
+
+	return sum * scale;
+
+}
+
+/**
+ * The normaliser of {@link irradianceError} for a true irradiance table: Ē, the mean of all its
+ * entries, and `scale = 1 / (K · Ē)` for {@link pointIrradianceError}.
+ * @throws RangeError when Ē ≤ 0 (all-black truth: a relative error means nothing).
+ */
+export function irradianceErrorScale( truth: ArrayLike<number>, directions: number, where = 'irradianceErrorScale' ): { meanIrradiance: number; scale: number } {
+
+	const meanIrradiance = meanOf( truth );
+	if ( ! ( meanIrradiance > 0 ) ) {
+
+		throw new RangeError( `${where}: the true irradiance averages ${meanIrradiance} over all points and normals; the relative error needs a positive mean (is the SH all black?).` );
+
+	}
+
+	return { meanIrradiance, scale: 1 / ( directions * meanIrradiance ) };
+
+}
+
+/** Mean, 95th percentile (nearest rank) and max of per-point errors. */
+export function summarizeErrors( perPoint: ArrayLike<number> ): IrradianceErrorSummary {
+
+	const count = perPoint.length;
+	if ( count === 0 ) return { mean: 0, p95: 0, max: 0 };
+	const sorted = Float64Array.from( perPoint ).sort();
+	return { mean: meanOf( perPoint ), p95: sorted[ Math.ceil( 0.95 * count ) - 1 ], max: sorted[ count - 1 ] };
+
+}
+
+function meanOf( values: ArrayLike<number> ): number {
+
+	let sum = 0;
+	for ( let i = 0; i < values.length; i ++ ) sum += values[ i ];
+	return values.length > 0 ? sum / values.length : 0;
+
+}
