@@ -40,8 +40,7 @@ void main() {
 	int y1 = min( y0 + block, size );
 	float texel = 2.0 / float( size );
 
-	vec3 sums[ 5 ] = vec3[ 5 ]( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) );
-	float y[ 5 ];
+	vec3 s0 = vec3( 0.0 ), s1 = vec3( 0.0 ), s2 = vec3( 0.0 ), s3 = vec3( 0.0 ), s4 = vec3( 0.0 );
 	for ( int face = 0; face < 6; face ++ ) {
 
 		for ( int j = y0; j < y1; j ++ ) {
@@ -52,8 +51,7 @@ void main() {
 				float s = ( float( i ) + 0.5 ) * texel - 1.0;
 				vec3 direction = faceDirection( face, s, t );
 				vec3 radiance = texture( cubeMap, direction ).rgb * texelFetch( solidAngles, ivec2( i, j ), 0 ).r;
-				shBasisHalf( half_, normalize( direction ), y );
-				for ( int k = 0; k < 5; k ++ ) sums[ k ] += radiance * y[ k ];
+				accumulateHalf( half_, radiance, normalize( direction ), s0, s1, s2, s3, s4 );
 
 			}
 
@@ -61,6 +59,6 @@ void main() {
 
 	}
 
-	writeSums( sums );
+	writeSums( s0, s1, s2, s3, s4 );
 
 }

@@ -28,8 +28,7 @@ void main() {
 	int y1 = min( y0 + block.y, size.y );
 	float columnAngle = 2.0 * PI / float( size.x );
 
-	vec3 sums[ 5 ] = vec3[ 5 ]( vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ), vec3( 0.0 ) );
-	float y[ 5 ];
+	vec3 s0 = vec3( 0.0 ), s1 = vec3( 0.0 ), s2 = vec3( 0.0 ), s3 = vec3( 0.0 ), s4 = vec3( 0.0 );
 	for ( int j = y0; j < y1; j ++ ) {
 
 		float bottom = ( float( j ) / float( size.y ) - 0.5 ) * PI;
@@ -42,13 +41,12 @@ void main() {
 			float longitude = ( ( float( i ) + 0.5 ) / float( size.x ) - 0.5 ) * 2.0 * PI;
 			vec3 direction = vec3( c * cos( longitude ), h, c * sin( longitude ) );
 			vec3 radiance = texelFetch( panorama, ivec2( i, j ), 0 ).rgb * solidAngle;
-			shBasisHalf( half_, direction, y );
-			for ( int k = 0; k < 5; k ++ ) sums[ k ] += radiance * y[ k ];
+			accumulateHalf( half_, radiance, direction, s0, s1, s2, s3, s4 );
 
 		}
 
 	}
 
-	writeSums( sums );
+	writeSums( s0, s1, s2, s3, s4 );
 
 }

@@ -19,6 +19,19 @@ export { blendSH } from './interpolation/blendSH.js';
 
 export { SH_FLOATS } from './validate.js';
 
+// Probe placement and automatic reduction (pure).
+export { placeGrid } from './placement/placeGrid.js';
+export { candidatesFromVertices } from './placement/candidatesFromVertices.js';
+export type { CandidatesFromVerticesOptions } from './placement/candidatesFromVertices.js';
+export { intersectRayTriangle } from './placement/intersectRayTriangle.js';
+export { TriangleBVH } from './placement/TriangleBVH.js';
+export { classifyPoints, OPEN_SPACE, INSIDE_GEOMETRY, NEAR_SURFACE, PARITY_RAY_DIRECTIONS } from './placement/classifyPoints.js';
+export type { ClassifyPointsOptions } from './placement/classifyPoints.js';
+export { irradianceError, IRRADIANCE_ERROR_NORMALS } from './placement/irradianceError.js';
+export type { IrradianceErrorSummary, IrradianceErrorResult } from './placement/irradianceError.js';
+export { reduceProbes } from './placement/reduceProbes.js';
+export type { ReduceProbesOptions, ReduceProbesResult } from './placement/reduceProbes.js';
+
 // three.js glue: GPU capture and projection, the probe volume, patched materials.
 export { SHProjector } from './capture/SHProjector.js';
 export { ProbeCapturer } from './capture/ProbeCapturer.js';
@@ -28,3 +41,9 @@ export { LightProbeVolume } from './runtime/LightProbeVolume.js';
 export type { LightProbeVolumeParameters, LightProbeVolumeCaptureOptions, AddOptions, ProbeRole } from './runtime/LightProbeVolume.js';
 export { patchMaterial, unpatchMaterial, getProbeVolumeUniforms } from './runtime/patchMaterial.js';
 export type { PatchMaterialOptions, ProbeVolumeUniforms } from './runtime/patchMaterial.js';
+export { placeFromMeshes } from './placement/placeFromMeshes.js';
+export type { PlaceFromMeshesOptions } from './placement/placeFromMeshes.js';
+export { gatherWorldGeometry } from './placement/gatherWorldGeometry.js';
+export type { WorldGeometry } from './placement/gatherWorldGeometry.js';
+export { findProbeLocators } from './placement/findProbeLocators.js';
+export type { ProbeLocators } from './placement/findProbeLocators.js';

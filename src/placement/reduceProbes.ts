@@ -206,7 +206,7 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 			sources.sort();
 			const c = 4 * p;
 			if ( sources[ 0 ] === lastSources[ c ] && sources[ 1 ] === lastSources[ c + 1 ] && sources[ 2 ] === lastSources[ c + 2 ] && sources[ 3 ] === lastSources[ c + 3 ] ) continue;
-			if ( lastSources[ c ] !== 0xFFFFFFFF ) continue; lastSources.set( sources, c );
+			lastSources.set( sources, c );
 
 			row.fill( 0 );
 			for ( let k = 0; k < 4; k ++ ) {

@@ -211,6 +211,24 @@ describe( 'placeFromMeshes (paper 2.1: automatic probes from the background mesh
 
 	} );
 
+	it( 'transforms normals by the inverse transpose: a sphere stretched into an ellipsoid gets the ellipsoid\'s normals', () => {
+
+		// Box faces stay axis-aligned under any axis scale, so the box test above cannot tell the
+		// normal matrix from the plain matrix. A unit sphere scaled by (1, 3, 1) is the ellipsoid
+		// x² + y²/9 + z² = 1, whose normal at (X, Y, Z) is ∝ (X, Y / 9, Z) (the gradient); the plain
+		// matrix would give (X, Y, Z) instead.
+		const ellipsoid = new Mesh( new SphereGeometry( 1, 16, 12 ), material );
+		ellipsoid.scale.set( 1, 3, 1 );
+		const { vertexPositions: p, vertexNormals: n } = gatherWorldGeometry( ellipsoid );
+		for ( let v = 0; v < p.length / 3; v ++ ) {
+
+			const g = new Vector3( p[ 3 * v ], p[ 3 * v + 1 ] / 9, p[ 3 * v + 2 ] ).normalize();
+			expect( g.dot( new Vector3( n[ 3 * v ], n[ 3 * v + 1 ], n[ 3 * v + 2 ] ) ) ).toBeGreaterThan( 1 - 1e-6 );
+
+		}
+
+	} );
+
 	it( 'handles 100k triangles and thousands of candidates in well under a few seconds', () => {
 
 		const knot = new Mesh( new TorusKnotGeometry( 1, 0.3, 1000, 50 ), material ); // 100 000 triangles
