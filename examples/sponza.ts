@@ -7,7 +7,7 @@ import { buildSponza, sponzaLayouts, sponzaPath, SPONZA_CHARACTER_HEIGHT } from 
 
 const app = new DemoApp( {
 	layouts: sponzaLayouts,
-	camera: { position: [ 9.5, 6.5, 1.6 ], target: [ - 4, 0.8, - 0.5 ] },
+	camera: { position: [ 4.3, 3.4, 1.0 ], target: [ - 4, 0.7, - 0.6 ] },
 	path: sponzaPath,
 	characterHeight: SPONZA_CHARACTER_HEIGHT,
 	capture: { near: 0.05, far: 400 },
