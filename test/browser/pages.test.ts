@@ -13,6 +13,13 @@ import { compareWithGolden, readPNG } from '../helpers/images.js';
  *   Delaunay triangles drawn on it; the fox near the far edge inside its highlighted (orange)
  *   triangle; behind the map, the Potsdamer Platz photo as the background (the probe nearest the
  *   fox uses it); probe markers hidden by probes=0.
+ * - sponza.png: looking along the atrium between the two arcades (columns and round arches on both
+ *   sides, the gallery above); the east sun lights a long patch of the courtyard floor and the fox
+ *   walks in it, bright orange; the shaded floor and arcades are dim but not black (the scene's
+ *   fill), textures (bricks, floor tiles) visible.
+ * - sibenik.png: the nave towards the apse: its tall windows, the red altar carpet and steps, the
+ *   black-and-white floor; sun patches from the north windows on the right aisle floor; the fox
+ *   in the right foreground, lit warm.
  *
  * The demo pages in a real browser (Chromium, WebGL2 on SwiftShader): each loads without console
  * errors, finishes its capture and renders a frame that is not blank; the view controls change the
