@@ -4,6 +4,7 @@
  */
 
 import { readFileSync, writeFileSync } from 'node:fs';
+import { mulberry32 } from '../src/tetrahedra/spatialOrder.js';
 
 export interface Dataset {
 	/** Short name used in tables, e.g. `'random 10k'`. */
@@ -14,21 +15,8 @@ export interface Dataset {
 	grid?: [ number, number, number ];
 }
 
-/** mulberry32: a small, fast, seeded PRNG returning floats in [0, 1). */
-export function mulberry32( seed: number ): () => number {
-
-	let a = seed >>> 0;
-	return function () {
-
-		a = ( a + 0x6D2B79F5 ) >>> 0;
-		let t = a;
-		t = Math.imul( t ^ ( t >>> 15 ), t | 1 );
-		t ^= t + Math.imul( t ^ ( t >>> 7 ), t | 61 );
-		return ( ( t ^ ( t >>> 14 ) ) >>> 0 ) / 4294967296;
-
-	};
-
-}
+/** mulberry32: the library's small seeded PRNG, floats in [0, 1). */
+export { mulberry32 };
 
 /** `count` points uniformly random in the unit cube. */
 export function randomPoints( name: string, count: number, seed: number ): Dataset {

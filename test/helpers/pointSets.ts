@@ -1,20 +1,8 @@
 /** Deterministic point sets for tests and benchmarks. */
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
-/** mulberry32: a tiny seeded PRNG, so every run sees the same points. */
-export function seededRandom( seed: number ): () => number {
-
-	let a = seed >>> 0;
-	return () => {
-
-		a = ( a + 0x6D2B79F5 ) >>> 0;
-		let t = a;
-		t = Math.imul( t ^ ( t >>> 15 ), t | 1 );
-		t ^= t + Math.imul( t ^ ( t >>> 7 ), t | 61 );
-		return ( ( t ^ ( t >>> 14 ) ) >>> 0 ) / 4294967296;
-
-	};
-
-}
+/** The library's seeded PRNG (mulberry32), so every run sees the same points. */
+export const seededRandom = mulberry32;
 
 /** n uniform random points in [0, size)³. */
 export function randomPoints( n: number, seed: number, size = 1 ): Float64Array {

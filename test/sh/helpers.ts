@@ -3,6 +3,7 @@
  */
 
 import { cubeFaceDirection, evaluateSHBasis } from '../../src/sh/index.js';
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /** three's truncated basis constants, per coefficient index. */
 export const BASIS_CONSTANT = [ 0.282095, 0.488603, 0.488603, 0.488603, 1.092548, 1.092548, 0.315392, 1.092548, 0.546274 ];
@@ -113,21 +114,8 @@ export function maxCoefficientError( sh: ArrayLike<number>, expected: ArrayLike<
 
 }
 
-/** Small deterministic PRNG (mulberry32) so failures are reproducible. */
-export function random( seed: number ): () => number {
-
-	let a = seed >>> 0;
-	return () => {
-
-		a = ( a + 0x6D2B79F5 ) >>> 0;
-		let t = a;
-		t = Math.imul( t ^ ( t >>> 15 ), t | 1 );
-		t ^= t + Math.imul( t ^ ( t >>> 7 ), t | 61 );
-		return ( ( t ^ ( t >>> 14 ) ) >>> 0 ) / 4294967296;
-
-	};
-
-}
+/** Small deterministic PRNG (the library's mulberry32) so failures are reproducible. */
+export const random = mulberry32;
 
 /** A uniformly distributed random unit vector. */
 export function randomDirection( next: () => number ): [ number, number, number ] {
