@@ -1,0 +1,214 @@
+/**
+ * Pure parts of the experiment's measurement: a layout's interpolated SH at the ground-truth
+ * samples, its error against the captured truth (the library's `irradianceError`), the rows of
+ * the result JSON, and the verdict on the paper's claim.
+ */
+
+import { GridInterpolator, blendSH, createProbeInterpolator, irradianceError, type ProbeInterpolator } from '../../src/index.js';
+
+/** How a layout turns positions into weights. */
+export type Interpolation = 'trilinear' | 'tetrahedral';
+
+/** What kind of layout a row is. */
+export type LayoutKind = 'grid' | 'hand' | 'auto';
+
+/** One row of the result JSON's `layouts`. */
+export interface LayoutResult {
+
+	name: string;
+	interpolation: Interpolation;
+	/** Probe count. */
+	probes: number;
+	/** Boxes (trilinear) or tetrahedra (tetrahedral): the paper's Table 4 columns. */
+	cells: number;
+	/** Mean over the samples of the per-sample irradiance error (`irradianceError`). */
+	meanError: number;
+	/** 95th percentile of the per-sample errors. */
+	p95Error: number;
+	/** Time to capture this layout's probes (ms, one `ProbeCapturer`, the same settings for all). */
+	captureMs: number;
+	kind: LayoutKind;
+	/** Largest per-sample error. */
+	maxError: number;
+	/** Probes per axis, for grids. */
+	counts?: number[];
+	/** Probes the open-space test rejects (inside geometry, against a surface, or outside the interior). */
+	probesNotInOpenSpace: number;
+
+}
+
+/** A layout ready to evaluate: positions, their captured SH and how to interpolate them. */
+export interface EvaluatedLayout {
+
+	name: string;
+	kind: LayoutKind;
+	interpolation: Interpolation;
+	positions: ArrayLike<number>;
+	sh: Float32Array;
+	captureMs: number;
+	/** For a trilinear grid: its box and counts (probe order that of `GridInterpolator`). */
+	grid?: { min: ArrayLike<number>; max: ArrayLike<number>; counts: ArrayLike<number> };
+	probesNotInOpenSpace?: number;
+
+}
+
+/** The interpolator of a layout: a `GridInterpolator` for trilinear grids, else the library's tetrahedralization. */
+export function interpolatorOf( layout: Pick<EvaluatedLayout, 'interpolation' | 'positions' | 'grid'> ): ProbeInterpolator {
+
+	if ( layout.interpolation === 'trilinear' ) {
+
+		if ( ! layout.grid ) throw new Error( 'interpolatorOf: a trilinear layout needs its grid (min, max, counts).' );
+		return new GridInterpolator( layout.grid.min, layout.grid.max, layout.grid.counts );
+
+	}
+
+	return createProbeInterpolator( layout.positions );
+
+}
+
+/** Interpolated SH (27 floats per sample) of the layout at each sample position, as the runtime blends them. */
+export function predictSH( interpolator: ProbeInterpolator, probeSH: ArrayLike<number>, samples: ArrayLike<number> ): Float32Array {
+
+	const count = samples.length / 3;
+	if ( probeSH.length !== 27 * interpolator.probeCount ) throw new RangeError( `predictSH: ${probeSH.length / 27} probes of SH for an interpolator of ${interpolator.probeCount}.` );
+	const out = new Float32Array( 27 * count );
+	const indices = new Uint32Array( 8 ), weights = new Float64Array( 8 ), sh = new Float64Array( 27 );
+	let hint = - 1;
+	for ( let i = 0; i < count; i ++ ) {
+
+		hint = interpolator.interpolate( samples[ 3 * i ], samples[ 3 * i + 1 ], samples[ 3 * i + 2 ], indices, weights, hint );
+		blendSH( indices, weights, probeSH, sh, interpolator.weightCount );
+		for ( let k = 0; k < 27; k ++ ) out[ 27 * i + k ] = sh[ k ];
+
+	}
+
+	return out;
+
+}
+
+/** Measures one layout against the truth at the samples: one row of the result. */
+export function evaluateLayout( layout: EvaluatedLayout, samples: ArrayLike<number>, trueSH: ArrayLike<number> ): LayoutResult {
+
+	const interpolator = interpolatorOf( layout );
+	const predicted = predictSH( interpolator, layout.sh, samples );
+	const error = irradianceError( predicted, trueSH );
+	const row: LayoutResult = {
+		name: layout.name,
+		interpolation: layout.interpolation,
+		probes: layout.positions.length / 3,
+		cells: interpolator.cellCount,
+		meanError: error.mean,
+		p95Error: error.p95,
+		captureMs: layout.captureMs,
+		kind: layout.kind,
+		maxError: error.max,
+		probesNotInOpenSpace: layout.probesNotInOpenSpace ?? 0,
+	};
+	if ( layout.grid ) row.counts = Array.from( layout.grid.counts );
+	return row;
+
+}
+
+/** The SH of probes `indices` of a set, 27 floats each, in that order. */
+export function subsetSH( sh: ArrayLike<number>, indices: ArrayLike<number> ): Float32Array {
+
+	const out = new Float32Array( 27 * indices.length );
+	for ( let i = 0; i < indices.length; i ++ ) for ( let k = 0; k < 27; k ++ ) out[ 27 * i + k ] = sh[ 27 * indices[ i ] + k ];
+	return out;
+
+}
+
+/** The positions of probes `indices` of a set, x, y, z each, in that order. */
+export function subsetPositions( positions: ArrayLike<number>, indices: ArrayLike<number> ): Float64Array {
+
+	const out = new Float64Array( 3 * indices.length );
+	for ( let i = 0; i < indices.length; i ++ ) for ( let a = 0; a < 3; a ++ ) out[ 3 * i + a ] = positions[ 3 * indices[ i ] + a ];
+	return out;
+
+}
+
+/** The paper's figures for a scene (Table 4). */
+export interface PaperFigures {
+
+	gridCounts: number[];
+	gridProbes: number;
+	handProbes: number;
+	boxes: number;
+	tetrahedra: number;
+
+}
+
+/** The answer to the paper's claim on one scene. */
+export interface Verdict {
+
+	/** The probe budget: 20 % of the paper's grid, rounded down. */
+	budget: number;
+	/** The paper's grid with trilinear interpolation. */
+	grid: { name: string; probes: number; meanError: number; p95Error: number };
+	/** The largest automatic layout within the budget (chosen before measuring: the most the claim allows). */
+	auto: { name: string; probes: number; meanError: number; p95Error: number } | null;
+	/** auto.meanError ≤ grid.meanError. */
+	holds: boolean;
+	/** auto.meanError / grid.meanError (< 1: better than the grid). */
+	ratio: number | null;
+	/** The hand-made layout, measured the same way. */
+	hand: { name: string; probes: number; meanError: number; p95Error: number; ratio: number } | null;
+	/** The fewest probes among the automatic layouts measured whose mean error is ≤ the grid's, or null. */
+	fewestAutoMatchingGrid: number | null;
+	/** The same for the p95 error. */
+	fewestAutoMatchingGridP95: number | null;
+	/** One sentence. */
+	text: string;
+
+}
+
+/** The verdict on "arbitrary probes + tetrahedra reach the grid with ≤ 20 % of its probes". */
+export function verdictOf( layouts: readonly LayoutResult[], paper: PaperFigures ): Verdict {
+
+	const grid = layouts.find( ( row ) => row.kind === 'grid' && row.interpolation === 'trilinear' && sameCounts( row.counts, paper.gridCounts ) );
+	if ( ! grid ) throw new Error( `verdictOf: no trilinear grid ${paper.gridCounts.join( 'x' )} among the layouts.` );
+	const budget = Math.floor( 0.2 * grid.probes );
+	const autos = layouts.filter( ( row ) => row.kind === 'auto' ).sort( ( a, b ) => a.probes - b.probes );
+	const within = autos.filter( ( row ) => row.probes <= budget );
+	const auto = within.length > 0 ? within[ within.length - 1 ] : null;
+	const hand = layouts.find( ( row ) => row.kind === 'hand' ) ?? null;
+	const pick = ( row: LayoutResult ) => ( { name: row.name, probes: row.probes, meanError: row.meanError, p95Error: row.p95Error } );
+	const holds = auto !== null && auto.meanError <= grid.meanError;
+	const ratio = auto ? auto.meanError / grid.meanError : null;
+	const fewest = autos.find( ( row ) => row.meanError <= grid.meanError )?.probes ?? null;
+	const fewestP95 = autos.find( ( row ) => row.p95Error <= grid.p95Error )?.probes ?? null;
+	const pct = ( value: number ) => `${( 100 * value ).toFixed( 1 )} %`;
+	let text: string;
+	if ( ! auto ) {
+
+		text = `No automatic layout within ${budget} probes was measured.`;
+
+	} else if ( holds ) {
+
+		text = `Holds: ${auto.probes} automatically placed probes (${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) reach a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error).`;
+
+	} else {
+
+		text = `Does not hold: ${auto.probes} automatically placed probes (${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) have a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error); ${fewest !== null ? `the automatic layouts match the grid from ${fewest} probes (${pct( fewest / grid.probes )})` : 'no automatic layout measured matches the grid'}.`;
+
+	}
+
+	return {
+		budget,
+		grid: pick( grid ),
+		auto: auto ? pick( auto ) : null,
+		holds,
+		ratio,
+		hand: hand ? { ...pick( hand ), ratio: hand.meanError / grid.meanError } : null,
+		fewestAutoMatchingGrid: fewest,
+		fewestAutoMatchingGridP95: fewestP95,
+		text,
+	};
+
+}
+
+function sameCounts( a: ArrayLike<number> | undefined, b: ArrayLike<number> ): boolean {
+
+	return a !== undefined && a.length === b.length && Array.from( a ).every( ( v, i ) => v === b[ i ] );
+
+}
