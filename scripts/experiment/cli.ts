@@ -14,10 +14,12 @@ export interface ExperimentOptions {
 	samples: number;
 	/** Cube face size (default 32). */
 	resolution: number;
+	/** Also write DIR/<scene>.captures.json: the ground truth's and the dense set's positions and SH, and the fixed layouts'. */
+	saveCaptures: boolean;
 
 }
 
-export const USAGE = `Usage: npm run experiment -- --scene <${SCENES.join( '|' )}> [--out DIR] [--seed N] [--dense-seed N] [--samples M] [--resolution R]
+export const USAGE = `Usage: npm run experiment -- --scene <${SCENES.join( '|' )}> [--out DIR] [--seed N] [--dense-seed N] [--samples M] [--resolution R] [--save-captures]
 
 Measures the paper's claim (arbitrary probes + tetrahedra reach a regular grid's lighting with
 ~20 % of its probes) in headless Chromium: writes DIR/<scene>.json, DIR/<scene>.md and
@@ -27,6 +29,8 @@ DIR/<scene>.png (default DIR: experiment/results).
   --dense-seed N   seed of the dense candidate set the automatic reduction runs on (default 2)
   --samples M      ground-truth points (default 500)
   --resolution R   cube face size of every capture (default 32)
+  --save-captures  also write DIR/<scene>.captures.json (positions and SH of the ground truth,
+                   the dense set and the fixed layouts) for re-analysis
 
 Sponza and Sibenik need the Dabrovic models in the asset folder ../shared/assets/ (or the folder
 named by CAPTURE_LIGHTING_ASSETS); Chromium at /usr/bin/chromium or CHROMIUM_PATH.`;
@@ -34,7 +38,7 @@ named by CAPTURE_LIGHTING_ASSETS); Chromium at /usr/bin/chromium or CHROMIUM_PAT
 /** Parses the arguments; throws an Error with a message for the user on bad input. */
 export function parseArguments( argv: readonly string[] ): ExperimentOptions | 'help' {
 
-	const options: Partial<ExperimentOptions> = { out: 'experiment/results', seed: 1, denseSeed: 2, samples: 500, resolution: 32 };
+	const options: Partial<ExperimentOptions> = { out: 'experiment/results', seed: 1, denseSeed: 2, samples: 500, resolution: 32, saveCaptures: false };
 	for ( let i = 0; i < argv.length; i ++ ) {
 
 		const arg = argv[ i ];
@@ -72,6 +76,7 @@ export function parseArguments( argv: readonly string[] ): ExperimentOptions | '
 			case '--dense-seed': options.denseSeed = integer( 0, 0xFFFFFFFF ); break;
 			case '--samples': options.samples = integer( 10, 100000 ); break;
 			case '--resolution': options.resolution = integer( 4, 256 ); break;
+			case '--save-captures': options.saveCaptures = true; break;
 			default: throw new Error( `unknown argument "${arg}".` );
 
 		}

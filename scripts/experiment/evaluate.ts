@@ -5,12 +5,16 @@
  */
 
 import { GridInterpolator, blendSH, createProbeInterpolator, irradianceError, type ProbeInterpolator } from '../../src/index.js';
+import { summarizeErrors } from '../../src/placement/irradianceError.js';
 
 /** How a layout turns positions into weights. */
 export type Interpolation = 'trilinear' | 'tetrahedral';
 
 /** What kind of layout a row is. */
-export type LayoutKind = 'grid' | 'hand' | 'auto';
+export type LayoutKind = 'grid' | 'hand' | 'auto' | 'dense';
+
+/** Which automatic placement made a layout. */
+export type AutoMethod = 'reduceProbes' | 'mean-greedy';
 
 /** One row of the result JSON's `layouts`. */
 export interface LayoutResult {
@@ -34,6 +38,19 @@ export interface LayoutResult {
 	counts?: number[];
 	/** Probes the open-space test rejects (inside geometry, against a surface, or outside the interior). */
 	probesNotInOpenSpace: number;
+	/** Automatic layouts: the placement that made it. */
+	method?: AutoMethod;
+	/** Automatic layouts: its mean error over the dense candidate set (what the placement saw; not the ground truth). */
+	denseMeanError?: number;
+	/** True when `captureMs` is the dense capture's time per probe × probes instead of a capture of its own. */
+	captureMsEstimated?: boolean;
+	/**
+	 * Mean and p95 error over only the samples whose paper's-grid cell has all its probes in open
+	 * space (present when some samples are not): where the grid is not handicapped by probes in
+	 * walls or outside the interior. Same per-sample errors, same normaliser.
+	 */
+	meanErrorGridValid?: number;
+	p95ErrorGridValid?: number;
 
 }
 
@@ -49,6 +66,9 @@ export interface EvaluatedLayout {
 	/** For a trilinear grid: its box and counts (probe order that of `GridInterpolator`). */
 	grid?: { min: ArrayLike<number>; max: ArrayLike<number>; counts: ArrayLike<number> };
 	probesNotInOpenSpace?: number;
+	method?: AutoMethod;
+	denseMeanError?: number;
+	captureMsEstimated?: boolean;
 
 }
 
@@ -86,8 +106,31 @@ export function predictSH( interpolator: ProbeInterpolator, probeSH: ArrayLike<n
 
 }
 
-/** Measures one layout against the truth at the samples: one row of the result. */
-export function evaluateLayout( layout: EvaluatedLayout, samples: ArrayLike<number>, trueSH: ArrayLike<number> ): LayoutResult {
+/**
+ * The samples (indices) whose trilinear cell in `grid` uses only probes for which `usable` is true
+ * (probes with zero weight do not count).
+ */
+export function gridValidSamples( grid: GridInterpolator, usable: ArrayLike<boolean>, samples: ArrayLike<number> ): Uint32Array {
+
+	const indices = new Uint32Array( 8 ), weights = new Float64Array( 8 ), out: number[] = [];
+	for ( let i = 0; 3 * i < samples.length; i ++ ) {
+
+		grid.interpolate( samples[ 3 * i ], samples[ 3 * i + 1 ], samples[ 3 * i + 2 ], indices, weights );
+		let valid = true;
+		for ( let k = 0; k < 8; k ++ ) if ( weights[ k ] > 0 && ! usable[ indices[ k ] ] ) valid = false;
+		if ( valid ) out.push( i );
+
+	}
+
+	return Uint32Array.from( out );
+
+}
+
+/**
+ * Measures one layout against the truth at the samples: one row of the result. With `subset`
+ * (sample indices, fewer than all), also its errors over those samples alone.
+ */
+export function evaluateLayout( layout: EvaluatedLayout, samples: ArrayLike<number>, trueSH: ArrayLike<number>, subset?: ArrayLike<number> ): LayoutResult {
 
 	const interpolator = interpolatorOf( layout );
 	const predicted = predictSH( interpolator, layout.sh, samples );
@@ -105,6 +148,17 @@ export function evaluateLayout( layout: EvaluatedLayout, samples: ArrayLike<numb
 		probesNotInOpenSpace: layout.probesNotInOpenSpace ?? 0,
 	};
 	if ( layout.grid ) row.counts = Array.from( layout.grid.counts );
+	if ( layout.method ) row.method = layout.method;
+	if ( layout.denseMeanError !== undefined ) row.denseMeanError = layout.denseMeanError;
+	if ( layout.captureMsEstimated ) row.captureMsEstimated = true;
+	if ( subset && subset.length > 0 && subset.length < samples.length / 3 ) {
+
+		const part = summarizeErrors( Array.from( subset, ( i ) => error.perPoint[ i ] ) );
+		row.meanErrorGridValid = part.mean;
+		row.p95ErrorGridValid = part.p95;
+
+	}
+
 	return row;
 
 }
@@ -145,14 +199,25 @@ export interface Verdict {
 	budget: number;
 	/** The paper's grid with trilinear interpolation. */
 	grid: { name: string; probes: number; meanError: number; p95Error: number };
-	/** The largest automatic layout within the budget (chosen before measuring: the most the claim allows). */
-	auto: { name: string; probes: number; meanError: number; p95Error: number } | null;
+	/**
+	 * The automatic layout judged: the largest count within the budget (the most the claim allows)
+	 * and, of the placements at that count, the one with the lowest error over the dense set — chosen
+	 * without looking at the ground truth.
+	 */
+	auto: { name: string; probes: number; meanError: number; p95Error: number; method?: AutoMethod } | null;
+	/** The whole dense candidate set as one layout (what the automatic layouts are cut from), if measured. */
+	dense: { probes: number; meanError: number; p95Error: number } | null;
 	/** auto.meanError ≤ grid.meanError. */
 	holds: boolean;
 	/** auto.meanError / grid.meanError (< 1: better than the grid). */
 	ratio: number | null;
 	/** The hand-made layout, measured the same way. */
 	hand: { name: string; probes: number; meanError: number; p95Error: number; ratio: number } | null;
+	/**
+	 * The same comparison over only the samples whose paper's-grid cell has all its probes in open
+	 * space, when some samples are not: the grid where it is not handicapped by misplaced probes.
+	 */
+	gridValid: { samples: number; gridMeanError: number; autoMeanError: number | null; ratio: number | null; holds: boolean } | null;
 	/** The fewest probes among the automatic layouts measured whose mean error is ≤ the grid's, or null. */
 	fewestAutoMatchingGrid: number | null;
 	/** The same for the p95 error. */
@@ -163,16 +228,19 @@ export interface Verdict {
 }
 
 /** The verdict on "arbitrary probes + tetrahedra reach the grid with ≤ 20 % of its probes". */
-export function verdictOf( layouts: readonly LayoutResult[], paper: PaperFigures ): Verdict {
+export function verdictOf( layouts: readonly LayoutResult[], paper: PaperFigures, gridValidSamples = 0 ): Verdict {
 
 	const grid = layouts.find( ( row ) => row.kind === 'grid' && row.interpolation === 'trilinear' && sameCounts( row.counts, paper.gridCounts ) );
 	if ( ! grid ) throw new Error( `verdictOf: no trilinear grid ${paper.gridCounts.join( 'x' )} among the layouts.` );
 	const budget = Math.floor( 0.2 * grid.probes );
 	const autos = layouts.filter( ( row ) => row.kind === 'auto' ).sort( ( a, b ) => a.probes - b.probes );
 	const within = autos.filter( ( row ) => row.probes <= budget );
-	const auto = within.length > 0 ? within[ within.length - 1 ] : null;
+	const largest = within.length > 0 ? within[ within.length - 1 ].probes : - 1;
+	const atLargest = within.filter( ( row ) => row.probes === largest ).sort( ( a, b ) => ( a.denseMeanError ?? Infinity ) - ( b.denseMeanError ?? Infinity ) );
+	const auto = atLargest.length > 0 ? atLargest[ 0 ] : null;
 	const hand = layouts.find( ( row ) => row.kind === 'hand' ) ?? null;
 	const pick = ( row: LayoutResult ) => ( { name: row.name, probes: row.probes, meanError: row.meanError, p95Error: row.p95Error } );
+	const denseRow = layouts.find( ( row ) => row.kind === 'dense' );
 	const holds = auto !== null && auto.meanError <= grid.meanError;
 	const ratio = auto ? auto.meanError / grid.meanError : null;
 	const fewest = autos.find( ( row ) => row.meanError <= grid.meanError )?.probes ?? null;
@@ -185,21 +253,29 @@ export function verdictOf( layouts: readonly LayoutResult[], paper: PaperFigures
 
 	} else if ( holds ) {
 
-		text = `Holds: ${auto.probes} automatically placed probes (${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) reach a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error).`;
+		text = `Holds: ${auto.probes} automatically placed probes (${auto.method ? auto.method + ', ' : ''}${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) reach a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error).`;
 
 	} else {
 
-		text = `Does not hold: ${auto.probes} automatically placed probes (${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) have a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error); ${fewest !== null ? `the automatic layouts match the grid from ${fewest} probes (${pct( fewest / grid.probes )})` : 'no automatic layout measured matches the grid'}.`;
+		text = `Does not hold: ${auto.probes} automatically placed probes (${auto.method ? auto.method + ', ' : ''}${pct( auto.probes / grid.probes )} of the grid's ${grid.probes}) have a mean error of ${pct( auto.meanError )} against the grid's ${pct( grid.meanError )} (${( ratio! ).toFixed( 2 )}× the grid's error); ${fewest !== null ? `the automatic layouts match the grid from ${fewest} probes (${pct( fewest / grid.probes )})` : 'no automatic layout measured matches the grid'}.`;
 
 	}
 
 	return {
 		budget,
 		grid: pick( grid ),
-		auto: auto ? pick( auto ) : null,
+		auto: auto ? { ...pick( auto ), ...( auto.method ? { method: auto.method } : {} ) } : null,
+		dense: denseRow ? { probes: denseRow.probes, meanError: denseRow.meanError, p95Error: denseRow.p95Error } : null,
 		holds,
 		ratio,
 		hand: hand ? { ...pick( hand ), ratio: hand.meanError / grid.meanError } : null,
+		gridValid: grid.meanErrorGridValid !== undefined ? {
+			samples: gridValidSamples,
+			gridMeanError: grid.meanErrorGridValid,
+			autoMeanError: auto?.meanErrorGridValid ?? null,
+			ratio: auto?.meanErrorGridValid !== undefined ? auto.meanErrorGridValid / grid.meanErrorGridValid : null,
+			holds: auto?.meanErrorGridValid !== undefined && auto.meanErrorGridValid <= grid.meanErrorGridValid,
+		} : null,
 		fewestAutoMatchingGrid: fewest,
 		fewestAutoMatchingGridP95: fewestP95,
 		text,

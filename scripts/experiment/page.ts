@@ -157,10 +157,11 @@ const api: ExperimentApi = {
 		await capturer.capture( scene, positions, target, {
 			onProgress( done, total ) {
 
+				// Probes submitted (the GPU may still be drawing them).
 				if ( done === total || done - reported >= Math.max( 50, total / 10 ) ) {
 
 					reported = done;
-					console.log( `[experiment] ${label}: ${done} / ${total} probes, ${( ( performance.now() - start ) / 1000 ).toFixed( 1 )} s` );
+					console.log( `[experiment] ${label}: ${done} / ${total} probes submitted` );
 
 				}
 

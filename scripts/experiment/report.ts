@@ -18,10 +18,12 @@ export interface ExperimentResult {
 	groundTruth: {
 		seed: number; region: { min: number[]; max: number[] }; minDistance: number; maxSky: number;
 		drawn: number; rejectedNear: number; rejectedInside: number; rejectedOutside: number; captureMs: number; normals: number;
+		/** Samples whose paper's-grid cell has all its probes in open space. */
+		gridValidSamples: number;
 	};
 	/** The dense candidate set the automatic reduction ran on. */
 	dense: {
-		seed: number; probes: number; fromGrid: number; fromVertices: number; captureMs: number; reduceMs: number;
+		seed: number; probes: number; fromGrid: number; fromVertices: number; captureMs: number; reduceMs: number; selectMs: number;
 		/** Mean error of each automatic cut over the dense set itself (what the reduction minimised). */
 		denseMeanError: Record<string, number>;
 		/** Largest |SH difference| between an automatic layout's own capture and the dense capture at the same points, relative to the largest L00. */
@@ -60,14 +62,16 @@ const pct = ( value: number, digits = 1 ) => `${( 100 * value ).toFixed( digits 
 /** The Markdown table of the layouts (the paper's Table 4 columns plus the errors). */
 export function layoutTable( layouts: readonly LayoutResult[] ): string {
 
+	const valid = layouts.some( ( row ) => row.meanErrorGridValid !== undefined );
 	const lines = [
-		'| layout | interpolation | probes | cells | capture (ms) | mean error | p95 error | probes not in open space |',
-		'|---|---|--:|--:|--:|--:|--:|--:|',
+		`| layout | interpolation | probes | cells | capture (ms) | mean error | p95 error |${valid ? ' mean / p95 where the grid is valid |' : ''} probes not in open space |`,
+		`|---|---|--:|--:|--:|--:|--:|${valid ? '--:|' : ''}--:|`,
 	];
 	for ( const row of layouts ) {
 
 		const cells = `${row.cells} ${row.interpolation === 'trilinear' ? 'boxes' : 'tetrahedra'}`;
-		lines.push( `| ${row.name} | ${row.interpolation} | ${row.probes} | ${cells} | ${Math.round( row.captureMs )} | ${pct( row.meanError )} | ${pct( row.p95Error )} | ${row.probesNotInOpenSpace} |` );
+		const extra = valid ? ` ${row.meanErrorGridValid !== undefined ? `${pct( row.meanErrorGridValid )} / ${pct( row.p95ErrorGridValid! )}` : '–'} |` : '';
+		lines.push( `| ${row.name} | ${row.interpolation} | ${row.probes} | ${cells} | ${row.captureMsEstimated ? '≈ ' : ''}${Math.round( row.captureMs )} | ${pct( row.meanError )} | ${pct( row.p95Error )} |${extra} ${row.probesNotInOpenSpace} |` );
 
 	}
 
@@ -87,8 +91,14 @@ export function markdownReport( result: ExperimentResult, plotFile: string ): st
 	lines.push( `# ${title}: the paper's claim, measured`, '' );
 	lines.push( `**Claim** (paper, Table 4): arbitrary probes with tetrahedral interpolation light the scene as well as the ${paper.gridCounts.join( 'x' )} grid (${paper.gridProbes} probes, trilinear) with about 20 % of its probes (the paper's hand-placed layout: ${paper.handProbes}).`, '' );
 	lines.push( `**Verdict: ${v.text}**`, '' );
-	if ( v.hand ) lines.push( `The scene module's hand-made layout (${v.hand.probes} probes): mean error ${pct( v.hand.meanError )}, ${v.hand.ratio.toFixed( 2 )}× the grid's.`, '' );
-	if ( v.fewestAutoMatchingGrid !== null ) lines.push( `Fewest automatically placed probes measured that match the grid's mean error: ${v.fewestAutoMatchingGrid} (${pct( v.fewestAutoMatchingGrid / v.grid.probes, 0 )} of the grid); its 95th percentile: ${v.fewestAutoMatchingGridP95 ?? 'none of those measured'}.`, '' );
+	const notes: string[] = [];
+	if ( v.gridValid ) notes.push( `Only ${v.gridValid.samples} of the ${result.samples} samples have all the probes of their ${paper.gridCounts.join( 'x' )} cell in open space (${paperGrid?.probesNotInOpenSpace ?? '?'} of the grid's ${paper.gridProbes} probes are in walls, against a surface or outside the interior). On those samples alone the grid's mean error is ${pct( v.gridValid.gridMeanError )} and the judged automatic layout's ${v.gridValid.autoMeanError !== null ? pct( v.gridValid.autoMeanError ) : '–'}${v.gridValid.ratio !== null ? ` (${v.gridValid.ratio.toFixed( 2 )}×): the claim ${v.gridValid.holds ? 'holds there too' : 'does not hold there'}` : ''}.` );
+	if ( v.dense ) notes.push( `All ${v.dense.probes} dense candidates together (what the automatic layouts are cut from) reach ${pct( v.dense.meanError )} mean${v.dense.meanError > v.grid.meanError ? ` — above the grid's ${pct( v.grid.meanError )}: with these candidates no automatic layout can match the grid` : ''}.` );
+	if ( v.fewestAutoMatchingGrid !== null ) notes.push( `Fewest automatically placed probes measured that match the grid's mean error: ${v.fewestAutoMatchingGrid} (${pct( v.fewestAutoMatchingGrid / v.grid.probes, 0 )} of the grid); its 95th percentile: ${v.fewestAutoMatchingGridP95 ?? 'none of those measured'}.` );
+	if ( paperGridTet && paperGrid ) notes.push( `The same ${paper.gridProbes} grid probes tetrahedralized: ${pct( paperGridTet.meanError )} mean against ${pct( paperGrid.meanError )} trilinear (${( paperGridTet.meanError / paperGrid.meanError ).toFixed( 2 )}×) — 4-probe tetrahedral blending by itself is ${paperGridTet.meanError > paperGrid.meanError ? 'less' : 'more'} accurate than 8-probe trilinear.` );
+	if ( v.hand && hand ) notes.push( `The scene module's hand-made layout (${v.hand.probes} probes${hand.probesNotInOpenSpace > 0 ? `, ${hand.probesNotInOpenSpace} of them outside the open space — e.g. a sky probe above the roof` : ''}): mean error ${pct( v.hand.meanError )}, ${v.hand.ratio.toFixed( 2 )}× the grid's${hand.meanErrorGridValid !== undefined ? `; ${pct( hand.meanErrorGridValid )} where the grid is valid` : ''}.` );
+	for ( const note of notes ) lines.push( `- ${note}` );
+	lines.push( '' );
 	lines.push( layoutTable( result.layouts ), '' );
 	lines.push( `![${title}: mean and 95th-percentile irradiance error vs probe count](${plotFile})`, '' );
 	lines.push( '| Table 4 | grid probes | arbitrary probes | boxes (grid) | tetrahedra |', '|---|--:|--:|--:|--:|' );
@@ -107,7 +117,8 @@ export function markdownReport( result: ExperimentResult, plotFile: string ): st
 	lines.push( `- **Ground truth**: ${result.samples} points drawn uniformly (seed ${gt.seed}) in the scene module's grid box [${gt.region.min.join( ', ' )}] – [${gt.region.max.join( ', ' )}], keeping those in open space: no surface within ${gt.minDistance} m, at most 10 % of 32 rays first hitting the undrawn side of a surface (a cube camera there sees through walls)${gt.maxSky < 1 ? `, at most ${pct( gt.maxSky, 0 )} of the rays leaving the scene (a closed interior: the air above the roof is not part of it)` : ''}. ${gt.drawn} drawn: ${gt.rejectedNear} near a surface, ${gt.rejectedInside} inside geometry${gt.maxSky < 1 ? `, ${gt.rejectedOutside} outside the interior` : ''}. Each captured like a probe (${Math.round( gt.captureMs / 1000 )} s).` );
 	lines.push( `- **Capture**: one \`ProbeCapturer\` for everything, ${capture.resolution}² per face, ${capture.type} targets, near ${capture.near}, far ${capture.far}, solid angle '${capture.solidAngle}'; the scene module's own build (geometry, materials${result.scene === 'basic' ? '' : ', textures, sun with its shadow map, sky dome'}, lights). Capture time: wall time of \`capture()\` for the layout's probes after a warm-up, ${result.environment.renderer}.` );
 	lines.push( `- **Grids** over the scene module's grid box; trilinear with \`GridInterpolator\`, and the same captured probes tetrahedralized (\`createProbeInterpolator\`); both rows share one capture time.` );
-	lines.push( `- **Automatic layouts**: \`reduceProbes\` (greedy insertion, mean error) on a dense candidate set captured separately — ${dense.probes} points in open space: a jittered grid (seed ${dense.seed}, ${dense.fromGrid} points) and vertex candidates (\`candidatesFromVertices\`, ${dense.fromVertices} points) — ${Math.round( dense.captureMs / 1000 )} s capture + ${( dense.reduceMs / 1000 ).toFixed( 1 )} s reduction. One run; each count is the prefix of its insertion order. Never reduced on the ground truth. Each cut was captured again as its own layout (capture time above); its SH equal the dense capture's to ${dense.recaptureMaxDifference.toExponential( 1 )} of the largest L00.` );
+	lines.push( `- **Automatic layouts** come from a dense candidate set captured separately — ${dense.probes} points in open space: a jittered grid (seed ${dense.seed}, ${dense.fromGrid} points) and vertex candidates (\`candidatesFromVertices\`, ${dense.fromVertices} points); ${Math.round( dense.captureMs / 1000 )} s capture — never from the ground truth. Two placements, each one run whose prefixes give every count: **reduceProbes** (the library: insert the worst-predicted candidate; ${( dense.reduceMs / 1000 ).toFixed( 1 )} s) and **mean-greedy** (this experiment's: from reduceProbes' starting set, insert whichever of the 32 worst-predicted candidates lowers the dense set's mean error most; ${( dense.selectMs / 1000 ).toFixed( 1 )} s), to tell the placement's limits from the claim's. The verdict judges the largest count within 20 % of the paper's grid, and of the two placements the one with the lower error on the dense set. Those layouts were captured again as layouts of their own (their capture time; their SH equal the dense capture's to ${dense.recaptureMaxDifference.toExponential( 1 )} of the largest L00); the other automatic rows reuse the dense capture and show its time per probe × probes (≈).` );
+	lines.push( `- **All dense candidates**: the whole dense set tetrahedralized, the best the automatic layouts could do with these candidates.` );
 	lines.push( `- **Hand-made layout**: the scene module's (\`scenes/${result.scene}.json\`), tetrahedral.` );
 	lines.push( `- Run: ${Math.round( result.runMs / 1000 )} s, ${result.environment.browser}.` );
 	return lines.join( '\n' ) + '\n';
@@ -117,10 +128,10 @@ export function markdownReport( result: ExperimentResult, plotFile: string ): st
 /** Options of {@link plotSVG}. */
 export interface PlotOptions { title: string; width?: number; height?: number }
 
-const COLORS = { grid: '#d62728', gridTet: '#ff7f0e', auto: '#1f77b4', hand: '#2ca02c', paper: '#000000', guide: '#777777' };
+const COLORS = { grid: '#d62728', gridTet: '#ff7f0e', auto: '#1f77b4', greedy: '#9467bd', hand: '#2ca02c', dense: '#8c564b', paper: '#000000', guide: '#777777' };
 
 /**
- * The answer to the claim in one picture: mean (left) and 95th-percentile (right) error against
+ * The answer to the claim in one picture: mean (left) and 95th-percentile (right) error (log scale) against
  * probe count (log scale) — grid curves (trilinear, and the same grids tetrahedralized), the
  * automatic tetrahedral curve, the hand-made layout, the paper's grid ringed, the 20 % budget and
  * the paper's grid's error as dashed guides.
@@ -132,9 +143,10 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		{ key: 'meanError', label: 'mean error' },
 		{ key: 'p95Error', label: '95th-percentile error' },
 	];
-	const top = 92, bottom = 64, left = 78, gap = 90, right = 24;
+	const top = 110, bottom = 64, left = 78, gap = 90, right = 24;
 	const panelWidth = ( width - left - right - gap ) / 2, panelHeight = height - top - bottom;
 	const probes = result.layouts.map( ( row ) => row.probes );
+	const headlineName = result.verdict.auto?.name;
 	const xMin = Math.pow( 10, Math.floor( Math.log10( Math.min( ...probes ) * 0.8 ) * 4 ) / 4 );
 	const xMax = Math.pow( 10, Math.ceil( Math.log10( Math.max( ...probes ) * 1.25 ) * 4 ) / 4 );
 	const out: string[] = [];
@@ -146,35 +158,38 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 	const legend: [ string, string, string, boolean ][] = [
 		[ 'grid, trilinear', COLORS.grid, 'square', true ],
 		[ 'same grid, tetrahedralized', COLORS.gridTet, 'diamond', true ],
-		[ 'automatic (reduceProbes), tetrahedral', COLORS.auto, 'circle', true ],
+		[ 'automatic: reduceProbes', COLORS.auto, 'circle', true ],
+		[ 'automatic: mean-greedy', COLORS.greedy, 'hexagon', true ],
 		[ 'hand-made (scene module)', COLORS.hand, 'triangle', false ],
+		[ 'all dense candidates', COLORS.dense, 'cross', false ],
 		[ "paper's grid", COLORS.paper, 'ring', false ],
 	];
-	let lx = left;
-	for ( const [ label, color, shape, line ] of legend ) {
+	// Two rows of four.
+	legend.forEach( ( [ label, color, shape, line ], i ) => {
 
-		if ( line ) out.push( `<line x1="${lx}" y1="56" x2="${lx + 30}" y2="56" stroke="${color}" stroke-width="2.5"${shape === 'diamond' ? ' stroke-dasharray="6 4"' : ''}/>` );
-		out.push( marker( shape, lx + 15, 56, color ) );
-		out.push( `<text x="${lx + 38}" y="61" font-size="14">${escape( label )}</text>` );
-		lx += 56 + 8.2 * label.length;
+		const lx = left + ( i % 4 ) * ( ( width - left - right ) / 4 ), ly = 52 + 22 * Math.floor( i / 4 );
+		if ( line ) out.push( `<line x1="${lx}" y1="${ly}" x2="${lx + 30}" y2="${ly}" stroke="${color}" stroke-width="2.5"${shape === 'diamond' ? ' stroke-dasharray="6 4"' : ''}/>` );
+		out.push( marker( shape, lx + 15, ly, color ) );
+		out.push( `<text x="${lx + 38}" y="${ly + 5}" font-size="14">${escape( label )}</text>` );
 
-	}
+	} );
 
 	for ( let p = 0; p < panels.length; p ++ ) {
 
 		const { key, label } = panels[ p ];
 		const x0 = left + p * ( panelWidth + gap ), y0 = top;
 		const values = result.layouts.map( ( row ) => row[ key ] );
-		const yMax = niceCeiling( Math.max( ...values ) * 1.08 );
+		const yMin = Math.pow( 10, Math.floor( Math.log10( Math.min( ...values ) * 0.85 ) * 4 ) / 4 );
+		const yMax = Math.pow( 10, Math.ceil( Math.log10( Math.max( ...values ) * 1.15 ) * 4 ) / 4 );
 		const sx = ( n: number ) => x0 + ( Math.log10( n ) - Math.log10( xMin ) ) / ( Math.log10( xMax ) - Math.log10( xMin ) ) * panelWidth;
-		const sy = ( e: number ) => y0 + panelHeight - e / yMax * panelHeight;
+		const sy = ( e: number ) => y0 + panelHeight - ( Math.log10( e ) - Math.log10( yMin ) ) / ( Math.log10( yMax ) - Math.log10( yMin ) ) * panelHeight;
 
 		// Axes and grid lines.
 		out.push( `<rect x="${x0}" y="${y0}" width="${panelWidth}" height="${panelHeight}" fill="none" stroke="#333" stroke-width="1"/>` );
-		for ( const tick of yTicks( yMax ) ) {
+		for ( const tick of logTicks( yMin, yMax ) ) {
 
 			out.push( `<line x1="${x0}" y1="${sy( tick )}" x2="${x0 + panelWidth}" y2="${sy( tick )}" stroke="#e4e4e4"/>` );
-			out.push( `<text x="${x0 - 8}" y="${sy( tick ) + 5}" font-size="13" text-anchor="end">${formatPercent( tick, yMax )}</text>` );
+			out.push( `<text x="${x0 - 8}" y="${sy( tick ) + 5}" font-size="13" text-anchor="end">${formatPercent( tick )}</text>` );
 
 		}
 
@@ -186,7 +201,7 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		}
 
 		out.push( `<text x="${x0 + panelWidth / 2}" y="${height - 18}" font-size="15" text-anchor="middle">probes (log scale)</text>` );
-		out.push( `<text transform="translate(${x0 - 58} ${y0 + panelHeight / 2}) rotate(-90)" font-size="15" text-anchor="middle">${label}</text>` );
+		out.push( `<text transform="translate(${x0 - 58} ${y0 + panelHeight / 2}) rotate(-90)" font-size="15" text-anchor="middle">${label} (log scale)</text>` );
 
 		// Guides: the budget (20 % of the paper's grid) and the paper's grid's error.
 		const gridRow = result.layouts.find( ( row ) => row.kind === 'grid' && row.interpolation === 'trilinear' && row.probes === result.paper.gridProbes );
@@ -201,7 +216,7 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		if ( gridRow ) {
 
 			out.push( `<line x1="${x0}" y1="${sy( gridRow[ key ] )}" x2="${x0 + panelWidth}" y2="${sy( gridRow[ key ] )}" stroke="${COLORS.guide}" stroke-width="1.5" stroke-dasharray="2 3"/>` );
-			out.push( `<text x="${x0 + panelWidth - 5}" y="${sy( gridRow[ key ] ) - 6}" font-size="12" fill="#444" text-anchor="end">paper's grid ${result.paper.gridCounts.join( 'x' )}: ${formatPercent( gridRow[ key ], 0.1 )}</text>` );
+			out.push( `<text x="${x0 + 5}" y="${sy( gridRow[ key ] ) - 6}" font-size="12" fill="#444">paper's grid ${result.paper.gridCounts.join( 'x' )}: ${formatPercent( gridRow[ key ] )}</text>` );
 
 		}
 
@@ -209,7 +224,8 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		const series: [ LayoutResult[], string, string, string ][] = [
 			[ result.layouts.filter( ( row ) => row.kind === 'grid' && row.interpolation === 'trilinear' ), COLORS.grid, 'square', '' ],
 			[ result.layouts.filter( ( row ) => row.kind === 'grid' && row.interpolation === 'tetrahedral' ), COLORS.gridTet, 'diamond', '6 4' ],
-			[ result.layouts.filter( ( row ) => row.kind === 'auto' ), COLORS.auto, 'circle', '' ],
+			[ result.layouts.filter( ( row ) => row.kind === 'auto' && row.method !== 'mean-greedy' ), COLORS.auto, 'circle', '' ],
+			[ result.layouts.filter( ( row ) => row.kind === 'auto' && row.method === 'mean-greedy' ), COLORS.greedy, 'hexagon', '' ],
 		];
 		for ( const [ rows, color, shape, dash ] of series ) {
 
@@ -222,13 +238,26 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		for ( const row of result.layouts.filter( ( r ) => r.kind === 'hand' ) ) {
 
 			out.push( marker( 'triangle', sx( row.probes ), sy( row[ key ] ), COLORS.hand ) );
-			out.push( `<text x="${sx( row.probes ) - 9}" y="${sy( row[ key ] ) - 10}" font-size="12" fill="${COLORS.hand}" text-anchor="end">hand ${row.probes}</text>` );
+			out.push( `<text x="${sx( row.probes ) - 10}" y="${sy( row[ key ] ) - 14}" font-size="12" fill="${COLORS.hand}" text-anchor="end">hand ${row.probes}</text>` );
+
+		}
+
+		for ( const row of result.layouts.filter( ( r ) => r.kind === 'dense' ) ) {
+
+			out.push( marker( 'cross', sx( row.probes ), sy( row[ key ] ), COLORS.dense ) );
+			out.push( `<text x="${sx( row.probes ) + 4}" y="${sy( row[ key ] ) - 12}" font-size="12" fill="${COLORS.dense}" text-anchor="middle">all ${row.probes}</text>` );
 
 		}
 
 		if ( gridRow ) out.push( marker( 'ring', sx( gridRow.probes ), sy( gridRow[ key ] ), COLORS.paper ) );
-		const headline = result.verdict.auto ? result.layouts.find( ( row ) => row.name === result.verdict.auto!.name ) : undefined;
-		if ( headline ) out.push( `<text x="${sx( headline.probes ) + 10}" y="${sy( headline[ key ] ) + 20}" font-size="12" fill="${COLORS.auto}">auto ${headline.probes}</text>` );
+		const headline = headlineName ? result.layouts.find( ( row ) => row.name === headlineName ) : undefined;
+		if ( headline ) {
+
+			const color = headline.method === 'mean-greedy' ? COLORS.greedy : COLORS.auto;
+			out.push( `<circle cx="${sx( headline.probes ).toFixed( 1 )}" cy="${sy( headline[ key ] ).toFixed( 1 )}" r="11" fill="none" stroke="${color}" stroke-width="2"/>` );
+			out.push( `<text x="${sx( headline.probes ) + 12}" y="${sy( headline[ key ] ) + 28}" font-size="12" fill="${color}">judged: ${headline.probes}</text>` );
+
+		}
 
 	}
 
@@ -245,29 +274,12 @@ function marker( shape: string, x: number, y: number, color: string ): string {
 		case 'square': return `<rect x="${( x - r ).toFixed( 1 )}" y="${( y - r ).toFixed( 1 )}" width="${2 * r}" height="${2 * r}" fill="${color}"/>`;
 		case 'diamond': return `<polygon points="${x.toFixed( 1 )},${( y - r - 1.5 ).toFixed( 1 )} ${( x + r + 1.5 ).toFixed( 1 )},${y.toFixed( 1 )} ${x.toFixed( 1 )},${( y + r + 1.5 ).toFixed( 1 )} ${( x - r - 1.5 ).toFixed( 1 )},${y.toFixed( 1 )}" fill="#fff" stroke="${color}" stroke-width="2"/>`;
 		case 'triangle': return `<polygon points="${x.toFixed( 1 )},${( y - r - 2 ).toFixed( 1 )} ${( x + r + 1 ).toFixed( 1 )},${( y + r ).toFixed( 1 )} ${( x - r - 1 ).toFixed( 1 )},${( y + r ).toFixed( 1 )}" fill="${color}"/>`;
+		case 'hexagon': return `<polygon points="${[ 0, 1, 2, 3, 4, 5 ].map( ( k ) => `${( x + ( r + 1 ) * Math.cos( k * Math.PI / 3 ) ).toFixed( 1 )},${( y + ( r + 1 ) * Math.sin( k * Math.PI / 3 ) ).toFixed( 1 )}` ).join( ' ' )}" fill="${color}"/>`;
+		case 'cross': return `<path d="M${x - r - 1},${y - r - 1} L${x + r + 1},${y + r + 1} M${x - r - 1},${y + r + 1} L${x + r + 1},${y - r - 1}" stroke="${color}" stroke-width="3"/>`;
 		case 'ring': return `<circle cx="${x.toFixed( 1 )}" cy="${y.toFixed( 1 )}" r="${r + 5}" fill="none" stroke="${color}" stroke-width="2"/>`;
 		default: return `<circle cx="${x.toFixed( 1 )}" cy="${y.toFixed( 1 )}" r="${r}" fill="${color}"/>`;
 
 	}
-
-}
-
-/** The smallest 1, 2, 2.5 or 5 × 10^k ≥ value. */
-export function niceCeiling( value: number ): number {
-
-	if ( ! ( value > 0 ) ) return 1;
-	const power = Math.pow( 10, Math.floor( Math.log10( value ) ) );
-	for ( const m of [ 1, 2, 2.5, 5, 10 ] ) if ( m * power >= value * ( 1 - 1e-12 ) ) return m * power;
-	return 10 * power;
-
-}
-
-function yTicks( max: number ): number[] {
-
-	const step = niceCeiling( max / 6 );
-	const out: number[] = [];
-	for ( let v = 0; v <= max * ( 1 + 1e-9 ); v += step ) out.push( v );
-	return out;
 
 }
 
@@ -279,7 +291,7 @@ export function logTicks( min: number, max: number ): number[] {
 
 		for ( const m of [ 1, 2, 5 ] ) {
 
-			const v = m * Math.pow( 10, k );
+			const v = +( m * Math.pow( 10, k ) ).toPrecision( 6 );
 			if ( v >= min * ( 1 - 1e-9 ) && v <= max * ( 1 + 1e-9 ) ) out.push( v );
 
 		}
@@ -290,9 +302,9 @@ export function logTicks( min: number, max: number ): number[] {
 
 }
 
-function formatPercent( value: number, scale: number ): string {
+function formatPercent( value: number ): string {
 
-	return `${( 100 * value ).toFixed( scale < 0.05 ? 1 : 0 )} %`;
+	return `${+( 100 * value ).toPrecision( 3 )} %`;
 
 }
 

@@ -19,13 +19,14 @@ import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { placeGrid, reduceProbes } from '../../src/index.js';
+import { GridInterpolator, placeGrid, reduceProbes } from '../../src/index.js';
 import { assetsFolder } from '../assetsPlugin.mjs';
 import { startSession, fromBase64, type ExperimentSession } from './browser.js';
 import { USAGE, parseArguments, type ExperimentOptions } from './cli.js';
 import { CONFIGS } from './config.js';
-import { evaluateLayout, subsetPositions, subsetSH, verdictOf, type EvaluatedLayout, type LayoutResult } from './evaluate.js';
+import { evaluateLayout, gridValidSamples, subsetPositions, subsetSH, verdictOf, type AutoMethod, type EvaluatedLayout, type LayoutResult } from './evaluate.js';
 import { markdownReport, plotSVG, validateResult, layoutTable, type ExperimentResult } from './report.js';
+import { selectByMeanError } from './selectByMeanError.js';
 import { OpenSpaceTest, OPEN, jitteredGrid, keepOpen, sampleOpenSpace, thinIndices, vertexCandidates } from './samples.js';
 
 const ROOT = resolve( fileURLToPath( new URL( '../..', import.meta.url ) ) );
@@ -158,40 +159,91 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 
 	}
 
+	// Automatic layouts: prefixes of the two placements' insertion orders. Their SH are the dense
+	// capture's at those points; the layouts at the budget (the ones the verdict judges) are captured
+	// again as layouts of their own, to time them and to check that the capture repeats exactly.
+	const budget = Math.floor( 0.2 * config.paper.gridProbes );
+	const start = reduction.order.subarray( 0, reduction.history.count[ 0 ] );
+	const selectStart = performance.now();
+	const greedy = selectByMeanError( densePositions, denseCapture.sh, { start, targetCount: Math.max( ...autoCounts ) } );
+	const selectMs = performance.now() - selectStart;
+	log( `mean-greedy selection: ${start.length} → ${greedy.order.length} in ${( selectMs / 1000 ).toFixed( 1 )} s` );
+	const perProbeMs = denseCapture.ms / kept.length;
 	let recaptureDifference = 0, largestL00 = 0;
 	for ( let i = 0; i < denseCapture.sh.length; i += 27 ) largestL00 = Math.max( largestL00, Math.abs( denseCapture.sh[ i ] ), Math.abs( denseCapture.sh[ i + 1 ] ), Math.abs( denseCapture.sh[ i + 2 ] ) );
 	const denseMeanError: Record<string, number> = {};
-	for ( const count of autoCounts ) {
+	const judged = Math.max( ...autoCounts.filter( ( n ) => n <= budget ), - 1 );
+	const methods: [ AutoMethod, Uint32Array, ( count: number ) => number ][] = [
+		[ 'reduceProbes', reduction.order, ( count ) => reduction.history.mean[ Array.from( reduction.history.count ).indexOf( count ) ] ],
+		[ 'mean-greedy', greedy.order, ( count ) => greedy.mean[ count - start.length ] ],
+	];
+	for ( const [ method, order, denseError ] of methods ) {
 
-		const indices = reduction.order.subarray( 0, count );
-		const positions = subsetPositions( densePositions, indices );
-		const { sh, ms } = await session.capture( positions, capture, `automatic ${count}` );
-		const expected = subsetSH( denseCapture.sh, indices );
-		for ( let i = 0; i < sh.length; i ++ ) recaptureDifference = Math.max( recaptureDifference, Math.abs( sh[ i ] - expected[ i ] ) / largestL00 );
-		const step = Array.from( reduction.history.count ).indexOf( count );
-		denseMeanError[ count ] = step >= 0 ? reduction.history.mean[ step ] : NaN;
-		layouts.push( { name: `automatic ${count}`, kind: 'auto', interpolation: 'tetrahedral', positions, sh, captureMs: ms, probesNotInOpenSpace: notOpen( positions ) } );
+		for ( const count of autoCounts ) {
+
+			if ( count < start.length && method === 'mean-greedy' ) continue; // the same starting set as reduceProbes
+			const indices = order.subarray( 0, count );
+			const positions = subsetPositions( densePositions, indices );
+			let sh = subsetSH( denseCapture.sh, indices ), captureMs = perProbeMs * count, captureMsEstimated = true;
+			if ( count === judged ) {
+
+				const own = await session.capture( positions, capture, `automatic ${count} (${method})` );
+				for ( let i = 0; i < sh.length; i ++ ) recaptureDifference = Math.max( recaptureDifference, Math.abs( own.sh[ i ] - sh[ i ] ) / largestL00 );
+				sh = own.sh;
+				captureMs = own.ms;
+				captureMsEstimated = false;
+
+			}
+
+			denseMeanError[ `${method} ${count}` ] = denseError( count );
+			layouts.push( {
+				name: `automatic ${count} (${method})`, kind: 'auto', method, interpolation: 'tetrahedral', positions, sh, captureMs, captureMsEstimated,
+				denseMeanError: denseError( count ), probesNotInOpenSpace: notOpen( positions ),
+			} );
+
+		}
+
+	}
+
+	layouts.push( { name: `all ${kept.length} dense candidates`, kind: 'dense', interpolation: 'tetrahedral', positions: densePositions, sh: denseCapture.sh, captureMs: denseCapture.ms, probesNotInOpenSpace: 0 } );
+
+	if ( options.saveCaptures ) {
+
+		const out = resolve( ROOT, options.out );
+		mkdirSync( out, { recursive: true } );
+		const plain = ( array: ArrayLike<number> ) => Array.from( array, ( v ) => Math.fround( v ) );
+		writeFileSync( join( out, `${options.scene}.captures.json` ), JSON.stringify( {
+			truth: { positions: plain( truth.positions ), sh: plain( truthCapture.sh ) },
+			dense: { positions: plain( densePositions ), sh: plain( denseCapture.sh ), reduceProbesOrder: Array.from( reduction.order ), meanGreedyOrder: Array.from( greedy.order ) },
+			layouts: layouts.filter( ( layout ) => layout.kind !== 'auto' && layout.kind !== 'dense' && ! ( layout.kind === 'grid' && layout.interpolation === 'tetrahedral' ) ).map( ( layout ) => ( { name: layout.name, positions: plain( layout.positions ), sh: plain( layout.sh ) } ) ),
+		} ) );
 
 	}
 
 	// 4. Errors against the ground truth.
-	const order = ( row: EvaluatedLayout ) => ( row.kind === 'grid' ? ( row.interpolation === 'trilinear' ? 0 : 1 ) : row.kind === 'hand' ? 2 : 3 );
+	const order = ( row: EvaluatedLayout ) => ( row.kind === 'grid' ? ( row.interpolation === 'trilinear' ? 0 : 1 ) : row.kind === 'hand' ? 2 : row.kind === 'auto' ? ( row.method === 'reduceProbes' ? 3 : 4 ) : 5 );
 	layouts.sort( ( a, b ) => order( a ) - order( b ) || a.positions.length - b.positions.length );
-	const rows: LayoutResult[] = layouts.map( ( layout ) => evaluateLayout( layout, truth.positions, truthCapture.sh ) );
+	// Where the paper's grid is not handicapped: samples whose grid cell has all its probes in open space.
+	const paperGrid = new GridInterpolator( box.min, box.max, config.paper.gridCounts );
+	const usable = Array.from( { length: paperGrid.probeCount }, ( _, p ) => open.classify( paperGrid.positions[ 3 * p ], paperGrid.positions[ 3 * p + 1 ], paperGrid.positions[ 3 * p + 2 ] ) === OPEN );
+	const gridValid = gridValidSamples( paperGrid, usable, truth.positions );
+	log( `${gridValid.length} of ${options.samples} samples have all their ${config.paper.gridCounts.join( 'x' )} grid probes in open space` );
+	const rows: LayoutResult[] = layouts.map( ( layout ) => evaluateLayout( layout, truth.positions, truthCapture.sh, gridValid ) );
 	for ( const row of rows ) log( `${row.name.padEnd( 48 )} ${String( row.probes ).padStart( 4 )} probes ${String( row.cells ).padStart( 5 )} cells  mean ${( 100 * row.meanError ).toFixed( 2 )} %  p95 ${( 100 * row.p95Error ).toFixed( 2 )} %` );
 
 	return {
 		scene: options.scene,
 		samples: options.samples,
 		layouts: rows,
-		verdict: verdictOf( rows, config.paper ),
+		verdict: verdictOf( rows, config.paper, gridValid.length ),
 		paper: config.paper,
 		groundTruth: {
 			seed: options.seed, region: { min: Array.from( box.min ), max: Array.from( box.max ) }, minDistance: config.minDistance, maxSky: config.maxSky,
 			drawn: truth.drawn, rejectedNear: truth.near, rejectedInside: truth.inside, rejectedOutside: truth.outside, captureMs: truthCapture.ms, normals: 26,
+			gridValidSamples: gridValid.length,
 		},
 		dense: {
-			seed: options.denseSeed, probes: kept.length, fromGrid, fromVertices: kept.length - fromGrid, captureMs: denseCapture.ms, reduceMs,
+			seed: options.denseSeed, probes: kept.length, fromGrid, fromVertices: kept.length - fromGrid, captureMs: denseCapture.ms, reduceMs, selectMs,
 			denseMeanError, recaptureMaxDifference: recaptureDifference,
 		},
 		capture: { ...capture, type: 'HalfFloat', solidAngle: 'exact' },

@@ -5,25 +5,13 @@
  */
 
 import { TriangleBVH, candidatesFromVertices, intersectRayTriangle } from '../../src/index.js';
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /** An axis-aligned box, [x, y, z] each. */
 export interface Box { min: ArrayLike<number>; max: ArrayLike<number> }
 
-/** Mulberry32: a small, fast, seeded generator of numbers in [0, 1). The same seed, the same sequence. */
-export function mulberry32( seed: number ): () => number {
-
-	let a = seed >>> 0;
-	return () => {
-
-		a = ( a + 0x6D2B79F5 ) >>> 0;
-		let t = a;
-		t = Math.imul( t ^ ( t >>> 15 ), t | 1 );
-		t ^= t + Math.imul( t ^ ( t >>> 7 ), t | 61 );
-		return ( ( t ^ ( t >>> 14 ) ) >>> 0 ) / 4294967296;
-
-	};
-
-}
+/** The library's seeded generator (mulberry32, numbers in [0, 1)): the same seed, the same points on every machine. */
+export { mulberry32 };
 
 /**
  * `count` unit directions spread evenly over the sphere (a Fibonacci lattice), turned so that
