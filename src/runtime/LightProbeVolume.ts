@@ -8,6 +8,12 @@ import { irradianceMatrices } from '../sh/irradiance.js';
 import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
+import { ProbeZones, type ProbeZoneDefinition } from './ProbeZones.js';
+import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
+import type { TriangleBVH } from '../placement/TriangleBVH.js';
+
+/** What `LightProbeVolume` accepts as occluders: a ready guard, a BVH, a triangle array, or static three.js objects. */
+export type ProbeOccluders = VisibilityGuard | TriangleBVH | ArrayLike<number> | Object3D | readonly Object3D[];
 
 /** What a probe is for (paper 2.1.1): light from the sky, bounce from the ground, colour bleeding, or filling gaps. */
 export type ProbeRole = 'sky' | 'bounce' | 'bleed' | 'fill';
@@ -35,6 +41,33 @@ export interface LightProbeVolumeParameters {
 	 * the same positions for the paper's trilinear baseline.
 	 */
 	interpolator?: ProbeInterpolator;
+
+	/**
+	 * Lighting zones: named groups of probes with their own tetrahedralization (e.g. one per room),
+	 * so an object blends only its zone's probes and light does not leak through the walls between
+	 * zones. Objects are assigned with `add( object, { zone } )` or by the zones' `bounds`; objects
+	 * outside every zone's bounds use the whole volume. Each zone is tetrahedralized on its own
+	 * (a planar triangulation when its probes are coplanar), whatever `interpolator` is. See
+	 * {@link ProbeZoneDefinition}.
+	 */
+	zones?: readonly ProbeZoneDefinition[];
+
+	/**
+	 * Static geometry for the visibility guard (see {@link LightProbeVolume.setOccluders}): probes
+	 * whose segment to an object passes through it do not light that object.
+	 */
+	occluders?: ProbeOccluders;
+
+	/** Options of the visibility guard built from `occluders` (ignored when it is a `VisibilityGuard`). */
+	guard?: VisibilityGuardOptions;
+
+}
+
+/** Options of {@link LightProbeVolume.sample}. */
+export interface SampleOptions {
+
+	/** Sample this zone's probes; default: the zone whose bounds contain the position, else the whole volume. */
+	zone?: string;
 
 }
 
@@ -70,6 +103,13 @@ export interface AddOptions {
 	 */
 	anchor?: Vector3 | { x: number; y: number; z: number };
 
+	/**
+	 * The lighting zone (by name) that lights this object, whatever its position. Default: the zone
+	 * whose bounds contain the object's anchor, re-checked every `update()`; outside all of them,
+	 * the whole volume.
+	 */
+	zone?: string;
+
 }
 
 interface Lit {
@@ -86,12 +126,27 @@ interface Lit {
 	clones: Material[];
 	/** The point, in the object's local frame, where the probes are sampled. */
 	anchor: Float64Array;
+	/** The zone given to add(), or −1 for automatic assignment by bounds. */
+	fixedZone: number;
+	/** The zone used last update (−1: the whole volume); a change resets `hint`. */
+	zone: number;
+	/** Visibility cache: where the segments were last tested, to which probes, and the result. */
+	guardPosition: Float64Array;
+	guardIndices: Uint32Array;
+	/** Bit k: slot k's probe was tested; its segment is blocked when bit k of `guardBlocked` is set. */
+	guardTested: number;
+	guardBlocked: number;
+	guardValid: boolean;
+	/** Nearest visible probe when every weighted probe is blocked: −2 not searched yet, −1 none. */
+	guardFallback: number;
 
 }
 
 const MAX_WEIGHTS = 8;
 const _indices = new Uint32Array( MAX_WEIGHTS );
 const _weights = new Float32Array( MAX_WEIGHTS );
+/** How many (index, weight) pairs the last `weigh()` wrote. */
+let _count = 0;
 let _warnedInstancing = false;
 
 /**
@@ -109,6 +164,11 @@ let _warnedInstancing = false;
  * volume.update();
  * renderer.render( scene, camera );
  * ```
+ *
+ * Against light leaking through walls there are two tools, usable together: lighting `zones`
+ * (each room blends only its own probes) and a visibility guard (`occluders` /
+ * {@link LightProbeVolume.setOccluders}: a probe whose segment to the object passes through
+ * static geometry gets weight 0 and the other weights are renormalised).
  */
 export class LightProbeVolume {
 
@@ -127,7 +187,13 @@ export class LightProbeVolume {
 	/** The tetrahedralization (or planar triangulation, or grid) that turns positions into weights. */
 	readonly interpolator: ProbeInterpolator;
 
+	/** The lighting zones, or null when none were given. */
+	readonly zones: ProbeZones | null;
+
 	private readonly lit: Lit[] = [];
+	private guard: VisibilityGuard | null = null;
+	/** 1 % of the probes' bounding-box diagonal: the default re-test distance of the guard. */
+	private readonly defaultMoveThreshold: number;
 
 	/**
 	 * @param parameters See {@link LightProbeVolumeParameters}.
@@ -166,6 +232,66 @@ export class LightProbeVolume {
 			this.interpolator = createProbeInterpolator( this.positions ) as TetrahedralMesh | PlanarMesh;
 
 		}
+
+		this.zones = parameters.zones !== undefined ? new ProbeZones( parameters.zones, this.positions ) : null;
+		const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
+		for ( let i = 0; i < this.positions.length; i ++ ) {
+
+			min[ i % 3 ] = Math.min( min[ i % 3 ], this.positions[ i ] );
+			max[ i % 3 ] = Math.max( max[ i % 3 ], this.positions[ i ] );
+
+		}
+
+		this.defaultMoveThreshold = 0.01 * Math.hypot( max[ 0 ] - min[ 0 ], max[ 1 ] - min[ 1 ], max[ 2 ] - min[ 2 ] );
+		if ( parameters.occluders !== undefined ) this.setOccluders( parameters.occluders, parameters.guard );
+
+	}
+
+	/**
+	 * Turns on the visibility guard (no light through walls): every object's blend, and
+	 * {@link LightProbeVolume.sample}, tests the segment from the sampling point to each weighted
+	 * probe against `occluders`; a blocked probe's weight is multiplied by
+	 * `options.blockedWeight` (default 0) and the weights are renormalised. When every weighted
+	 * probe is blocked, the nearest visible probe of the object's zone (or of the volume) is used
+	 * alone, searching the 8 nearest; when none of them is visible either, the unguarded weights
+	 * are kept. `update()` tests again only when an object has moved more than
+	 * `options.moveThreshold` (default 1 % of the probes' bounding-box diagonal) or blends other
+	 * probes than last time; between tests it reuses the result, without allocating.
+	 *
+	 * Occluders are static: pass the level's walls, floors and large props, built once in world
+	 * space (objects are read where they are now); not the objects this volume lights.
+	 * @param occluders A {@link VisibilityGuard}, a `TriangleBVH`, a flat triangle array (9
+	 * floats per triangle), an `Object3D` or an array of them; null turns the guard off.
+	 * @param options See {@link VisibilityGuardOptions} (ignored when `occluders` is a guard).
+	 */
+	setOccluders( occluders: ProbeOccluders | null, options?: VisibilityGuardOptions ): this {
+
+		if ( occluders === null ) this.guard = null;
+		else this.guard = occluders instanceof VisibilityGuard ? occluders : new VisibilityGuard( occluders, options );
+		for ( const entry of this.lit ) { entry.guardValid = false; entry.guardFallback = - 2; }
+		return this;
+
+	}
+
+	/** The visibility guard set by `occluders` / {@link LightProbeVolume.setOccluders}, or null. */
+	get visibilityGuard(): VisibilityGuard | null {
+
+		return this.guard;
+
+	}
+
+	/**
+	 * Diagnostics: the tetrahedra of the volume's tetrahedralization (not the zones') with an edge
+	 * through the occluders — where light leaks across geometry without the guard or zones.
+	 * @throws when no occluders are set or the interpolator has no tetrahedra (grid, planar).
+	 */
+	findLeakingTetrahedra(): Uint32Array {
+
+		const where = 'LightProbeVolume.findLeakingTetrahedra';
+		if ( ! this.guard ) throw new Error( `${where}: no occluders; call setOccluders() first.` );
+		const tetrahedra = ( this.interpolator as Partial<TetrahedralMesh> ).tetrahedra;
+		if ( ! ( tetrahedra instanceof Uint32Array ) ) throw new Error( `${where}: the volume's interpolator has no tetrahedra (a grid or a planar mesh).` );
+		return this.guard.findLeakingTetrahedra( this.positions, tetrahedra );
 
 	}
 
@@ -242,10 +368,12 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * Writes the interpolated SH (27 floats) at a world position into `target` and returns it.
+	 * Writes the interpolated SH (27 floats) at a world position into `target` and returns it,
+	 * with the same zone and visibility logic as a registered object (tested afresh, no cache).
 	 * @param position `{ x, y, z }` (e.g. a `Vector3`) or `[ x, y, z ]`.
+	 * @param options `zone`: sample this zone by name instead of the one whose bounds contain the position.
 	 */
-	sample( position: Vector3 | { x: number; y: number; z: number } | ArrayLike<number>, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
+	sample( position: Vector3 | { x: number; y: number; z: number } | ArrayLike<number>, target: Float32Array = new Float32Array( SH_FLOATS ), options: SampleOptions = {} ): Float32Array {
 
 		const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
 		if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) {
@@ -254,8 +382,9 @@ export class LightProbeVolume {
 
 		}
 
-		this.interpolator.interpolate( x, y, z, _indices, _weights );
-		return blendSH( _indices, _weights, this.sh, target, this.interpolator.weightCount );
+		const zone = options.zone !== undefined ? this.zoneIndex( 'LightProbeVolume.sample', options.zone ) : ( this.zones ? this.zones.zoneAt( x, y, z ) : - 1 );
+		this.weigh( x, y, z, zone, - 1, null );
+		return blendSH( _indices, _weights, this.sh, target, _count );
 
 	}
 
@@ -270,10 +399,13 @@ export class LightProbeVolume {
 		if ( ! object || ( object as { isObject3D?: boolean } ).isObject3D !== true ) throw new TypeError( 'LightProbeVolume.add: object must be a three.js Object3D.' );
 		if ( this.lit.some( ( entry ) => entry.object === object ) ) return this;
 
+		const fixedZone = options.zone !== undefined ? this.zoneIndex( 'LightProbeVolume.add', options.zone ) : - 1;
 		const entry: Lit = {
 			object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
 			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 }, probeVolumeDirectScale: { value: 1 } },
 			replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor ),
+			fixedZone, zone: - 1, guardPosition: new Float64Array( 3 ), guardIndices: new Uint32Array( MAX_WEIGHTS ),
+			guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2,
 		};
 
 		const owned = new Set<Material>();
@@ -345,6 +477,17 @@ export class LightProbeVolume {
 
 	}
 
+	/**
+	 * The name of the zone that lit a registered object at the last `update()` (or `add()`), or
+	 * null when it used the whole volume or is not registered.
+	 */
+	getZone( object: Object3D ): string | null {
+
+		const entry = this.lit.find( ( candidate ) => candidate.object === object );
+		return entry && entry.zone >= 0 && this.zones ? this.zones.zones[ entry.zone ].name : null;
+
+	}
+
 	/** The uniforms `update()` writes for a registered object, or null. */
 	getUniforms( object: Object3D ): ProbeVolumeUniforms | null {
 
@@ -354,7 +497,8 @@ export class LightProbeVolume {
 
 	/**
 	 * Once per frame, before rendering: locates every registered object (walking from last
-	 * frame's cell), blends its probes' SH and writes its irradiance matrices. Allocation-free.
+	 * frame's cell) in its zone or the whole volume, drops the probes it cannot see when
+	 * occluders are set, blends its probes' SH and writes its irradiance matrices. Allocation-free.
 	 */
 	update(): void {
 
@@ -370,9 +514,121 @@ export class LightProbeVolume {
 		const x = e[ 0 ] * a[ 0 ] + e[ 4 ] * a[ 1 ] + e[ 8 ] * a[ 2 ] + e[ 12 ];
 		const y = e[ 1 ] * a[ 0 ] + e[ 5 ] * a[ 1 ] + e[ 9 ] * a[ 2 ] + e[ 13 ];
 		const z = e[ 2 ] * a[ 0 ] + e[ 6 ] * a[ 1 ] + e[ 10 ] * a[ 2 ] + e[ 14 ];
-		entry.hint = this.interpolator.interpolate( x, y, z, _indices, _weights, entry.hint );
-		blendSH( _indices, _weights, this.sh, entry.sh, this.interpolator.weightCount );
+		let zone = entry.fixedZone;
+		if ( zone < 0 && this.zones !== null ) zone = this.zones.zoneAt( x, y, z );
+		if ( zone !== entry.zone ) {
+
+			// Cell indices belong to one interpolator: a hint from another zone's would be wrong.
+			entry.zone = zone;
+			entry.hint = - 1;
+
+		}
+
+		entry.hint = this.weigh( x, y, z, zone, entry.hint, entry );
+		blendSH( _indices, _weights, this.sh, entry.sh, _count );
 		irradianceMatrices( entry.sh, entry.uniforms.probeVolumeMatrices.value );
+
+	}
+
+	/**
+	 * Writes the probes and weights for (x, y, z) into `_indices` / `_weights` (`_count` pairs):
+	 * the zone's interpolator (indices mapped to the volume's probes) or the volume's, then the
+	 * visibility guard. `entry` carries the guard's cache (null: test afresh).
+	 * @returns The interpolator's cell, as the next hint.
+	 */
+	private weigh( x: number, y: number, z: number, zone: number, hint: number, entry: Lit | null ): number {
+
+		if ( zone >= 0 ) {
+
+			const { interpolator, probes } = this.zones!.zones[ zone ];
+			hint = interpolator.interpolate( x, y, z, _indices, _weights, hint );
+			_count = interpolator.weightCount;
+			for ( let k = 0; k < _count; k ++ ) _indices[ k ] = probes[ _indices[ k ] ];
+
+		} else {
+
+			hint = this.interpolator.interpolate( x, y, z, _indices, _weights, hint );
+			_count = this.interpolator.weightCount;
+
+		}
+
+		if ( this.guard !== null ) this.applyGuard( this.guard, x, y, z, zone, entry );
+		return hint;
+
+	}
+
+	private applyGuard( guard: VisibilityGuard, x: number, y: number, z: number, zone: number, entry: Lit | null ): void {
+
+		const count = _count, p = this.positions;
+		let cached = false;
+		if ( entry !== null && entry.guardValid ) {
+
+			const threshold = guard.moveThreshold ?? this.defaultMoveThreshold;
+			const dx = x - entry.guardPosition[ 0 ], dy = y - entry.guardPosition[ 1 ], dz = z - entry.guardPosition[ 2 ];
+			cached = dx * dx + dy * dy + dz * dz <= threshold * threshold;
+			for ( let k = 0; k < count && cached; k ++ ) {
+
+				// A slot now weighted but not tested last time (or another probe) needs a new test.
+				if ( entry.guardIndices[ k ] !== _indices[ k ] || ( _weights[ k ] > 0 && ( entry.guardTested & ( 1 << k ) ) === 0 ) ) cached = false;
+
+			}
+
+		}
+
+		let blocked = 0;
+		if ( cached ) {
+
+			blocked = entry!.guardBlocked;
+
+		} else {
+
+			let tested = 0;
+			for ( let k = 0; k < count; k ++ ) {
+
+				if ( ! ( _weights[ k ] > 0 ) ) continue;
+				tested |= 1 << k;
+				const i = 3 * _indices[ k ];
+				if ( guard.segmentBlocked( x, y, z, p[ i ], p[ i + 1 ], p[ i + 2 ] ) ) blocked |= 1 << k;
+
+			}
+
+			if ( entry !== null ) {
+
+				entry.guardValid = true;
+				entry.guardPosition[ 0 ] = x; entry.guardPosition[ 1 ] = y; entry.guardPosition[ 2 ] = z;
+				entry.guardIndices.set( _indices );
+				entry.guardTested = tested;
+				entry.guardBlocked = blocked;
+				entry.guardFallback = - 2;
+
+			}
+
+		}
+
+		if ( guard.applyMask( blocked, _weights, count ) > 0 ) return;
+
+		// Every weighted probe is behind geometry: the nearest visible one, alone.
+		let fallback = entry !== null ? entry.guardFallback : - 2;
+		if ( fallback === - 2 ) {
+
+			fallback = guard.nearestVisible( x, y, z, p, zone >= 0 ? this.zones!.zones[ zone ].probes : null );
+			if ( entry !== null ) entry.guardFallback = fallback;
+
+		}
+
+		if ( fallback < 0 ) return; // none visible nearby: keep the unguarded weights
+		_indices[ 0 ] = fallback;
+		_weights[ 0 ] = 1;
+		for ( let k = 1; k < count; k ++ ) { _indices[ k ] = fallback; _weights[ k ] = 0; }
+
+	}
+
+	private zoneIndex( where: string, name: string ): number {
+
+		if ( this.zones === null ) throw new Error( `${where}: zone "${name}" given, but the volume has no zones.` );
+		const index = this.zones.indexOf( name );
+		if ( index < 0 ) throw new RangeError( `${where}: unknown zone "${name}"; the zones are ${this.zones.zones.map( ( zone ) => `"${zone.name}"` ).join( ', ' )}.` );
+		return index;
 
 	}
 

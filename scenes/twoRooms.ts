@@ -1,0 +1,105 @@
+import * as THREE from 'three';
+
+/**
+ * Two rooms sharing a wall — the classic light-leak setup. Room A (x < 0) is lit red, room B
+ * (x > 0) blue; a probe grid spans both, so the Delaunay cells between the two probe layers
+ * nearest the wall straddle it and, without zones or the visibility guard, blend red light into
+ * room B (and blue into A).
+ *
+ * - Outer shell: x ∈ [−4.1, 4.1], y ∈ [0, 3], z ∈ [−2, 2], white matte, seen from inside.
+ * - Shared wall: a closed box x ∈ [−0.1, 0.1], full height and depth, white matte.
+ * - Each room: an emissive ceiling panel (pure red in A, pure blue in B, so no light of one room
+ *   can reach the other room's surfaces except through the probes) and a spot light straight down
+ *   of the same colour whose cone stays inside its room (three's lights are not shadowed, so a
+ *   point light would light the other room's floor through the wall).
+ * - Probes: x ∈ {−3.4, −1, 1, 3.4} × y ∈ {0.5, 2.5} × z ∈ {−1.5, 1.5}, 16 in all, index
+ *   `4 · ix + 2 · iy + iz`; probes 0–7 are in room A, 8–15 in room B.
+ */
+export interface TwoRooms {
+
+	/** Everything: shell, wall, panels, lights. */
+	scene: THREE.Scene;
+
+	/** The static meshes (shell, wall, panels): the occluders for the visibility guard. */
+	statics: THREE.Group;
+
+	/** Probe positions, x, y, z per probe (16). */
+	positions: number[];
+
+	/** Probe indices per room. */
+	probesA: number[];
+	probesB: number[];
+
+	/** Inner bounds of each room (the air between floor, ceiling and walls). */
+	boundsA: THREE.Box3;
+	boundsB: THREE.Box3;
+
+	/** x of the wall's faces: room A's side at −halfThickness, room B's at +halfThickness. */
+	wallHalfThickness: number;
+
+	/** Zone definitions for `LightProbeVolume` (`zones`): one per room, assigned by bounds. */
+	zones: { name: string; probes: number[]; bounds: THREE.Box3 }[];
+
+	/** Frees geometries and materials. */
+	dispose(): void;
+
+}
+
+/** Builds the two-room scene (see {@link TwoRooms}). */
+export function createTwoRooms(): TwoRooms {
+
+	const HALF = 0.1, LENGTH = 4.1, HEIGHT = 3, DEPTH = 4;
+	const white = ( side: THREE.Side ) => new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, side } );
+	const shell = new THREE.Mesh( new THREE.BoxGeometry( 2 * LENGTH, HEIGHT, DEPTH ), white( THREE.BackSide ) );
+	shell.position.y = HEIGHT / 2;
+	shell.name = 'shell';
+	const wall = new THREE.Mesh( new THREE.BoxGeometry( 2 * HALF, HEIGHT, DEPTH ), white( THREE.FrontSide ) );
+	wall.position.y = HEIGHT / 2;
+	wall.name = 'shared wall';
+
+	const statics = new THREE.Group();
+	statics.add( shell, wall );
+	const scene = new THREE.Scene();
+	scene.add( statics );
+
+	const centreA = - ( LENGTH + HALF ) / 2, centreB = ( LENGTH + HALF ) / 2;
+	for ( const [ x, color, name ] of [ [ centreA, 0xff0000, 'A' ], [ centreB, 0x0000ff, 'B' ] ] as const ) {
+
+		const panel = new THREE.Mesh( new THREE.PlaneGeometry( 1.6, 1.6 ), new THREE.MeshStandardMaterial( { color: 0x000000, emissive: color, emissiveIntensity: 2 } ) );
+		panel.rotation.x = Math.PI / 2; // facing down
+		panel.position.set( x, HEIGHT - 0.02, 0 );
+		panel.name = `panel ${name}`;
+		statics.add( panel );
+		// Cone half-angle 0.5 rad from 2.9 m: a disc of radius 1.58 on the floor, inside the room.
+		const spot = new THREE.SpotLight( color, 25, 0, 0.5, 0, 2 );
+		spot.position.set( x, HEIGHT - 0.1, 0 );
+		spot.target.position.set( x, 0, 0 );
+		scene.add( spot, spot.target );
+
+	}
+
+	const positions: number[] = [];
+	for ( const x of [ - 3.4, - 1, 1, 3.4 ] ) for ( const y of [ 0.5, 2.5 ] ) for ( const z of [ - 1.5, 1.5 ] ) positions.push( x, y, z );
+	const probesA = [ 0, 1, 2, 3, 4, 5, 6, 7 ], probesB = [ 8, 9, 10, 11, 12, 13, 14, 15 ];
+	const boundsA = new THREE.Box3( new THREE.Vector3( - LENGTH, 0, - DEPTH / 2 ), new THREE.Vector3( - HALF, HEIGHT, DEPTH / 2 ) );
+	const boundsB = new THREE.Box3( new THREE.Vector3( HALF, 0, - DEPTH / 2 ), new THREE.Vector3( LENGTH, HEIGHT, DEPTH / 2 ) );
+	scene.updateMatrixWorld( true );
+
+	return {
+		scene, statics, positions, probesA, probesB, boundsA, boundsB, wallHalfThickness: HALF,
+		zones: [ { name: 'A', probes: probesA, bounds: boundsA }, { name: 'B', probes: probesB, bounds: boundsB } ],
+		dispose() {
+
+			statics.traverse( ( object ) => {
+
+				const mesh = object as THREE.Mesh;
+				if ( mesh.isMesh !== true ) return;
+				mesh.geometry.dispose();
+				for ( const material of Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ] ) material.dispose();
+
+			} );
+
+		},
+	};
+
+}
