@@ -5,6 +5,7 @@ import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
+import { makeIrradianceNonNegative, windowSH } from '../sh/windowSH.js';
 import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
@@ -85,6 +86,19 @@ export type LightProbeVolumeCaptureOptions = ProbeCaptureSettings & Omit<ProbeCa
 	 * (paper 3.4: sky, bounce and object-reflection captures need different ranges and layers).
 	 */
 	roles?: Partial<Record<ProbeRole, ProbeCaptureSettings & { layers?: Layers }>>;
+
+	/**
+	 * De-ringing window strength in [0, 1] applied to each captured probe (see `windowSHFactors`:
+	 * 0 = none, 0.1 light, 1/3 strong blur). Default 0.
+	 */
+	deringing?: number;
+
+	/**
+	 * Guarantee that every captured probe's irradiance is ≥ 0 in every direction, by raising the
+	 * de-ringing strength of the probes that need it (see `makeIrradianceNonNegative`); blends of
+	 * such probes are then ≥ 0 too. Default false.
+	 */
+	nonNegative?: boolean;
 
 };
 
@@ -337,6 +351,9 @@ export class LightProbeVolume {
 
 		}
 
+		const deringing = options.deringing ?? 0;
+		if ( ! ( deringing >= 0 && deringing <= 1 ) ) throw new RangeError( `${where}: options.deringing must be in [0, 1], got ${options.deringing}.` );
+		const nonNegative = options.nonNegative === true;
 		const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
 		const total = indices.length;
 		let done = 0;
@@ -352,6 +369,8 @@ export class LightProbeVolume {
 				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * group.length ), {
 					...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
 				} );
+				if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
+				else if ( deringing > 0 ) windowSH( captured, deringing, captured );
 				group.forEach( ( index, k ) => this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
 				done += group.length;
 

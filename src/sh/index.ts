@@ -17,3 +17,4 @@ export { projectEquirectToSH } from './projectEquirectToSH.js';
 export type { EquirectProjectionOptions } from './projectEquirectToSH.js';
 export { evaluateIrradiance, evaluateRadiance, irradianceMatrices, IRRADIANCE_MATRICES_FLOATS } from './irradiance.js';
 export type { DirectionLike, WritableArrayLike } from './irradiance.js';
+export { windowSH, windowSHFactors, minIrradiance, minRadiance, makeIrradianceNonNegative, makeRadianceNonNegative } from './windowSH.js';
