@@ -4,7 +4,7 @@ import { HDRLoader } from 'three/addons/loaders/HDRLoader.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import GUI from 'lil-gui';
-import { LightProbeVolume, PlanarMesh, evaluateIrradiance, projectEquirectToSHGPU } from 'three-capture-lighting';
+import { LightProbeVolume, PlanarMesh, evaluateIrradiance, makeIrradianceNonNegative, projectEquirectToSHGPU, windowSH } from 'three-capture-lighting';
 import { loadCharacter } from './common/character.js';
 import { Overlay } from './common/Overlay.js';
 import type { DemoReport } from './common/DemoApp.js';
@@ -14,11 +14,13 @@ import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, typ
 // placed on a flat map, a 5x4 grid (20) vs 12 placed by hand. The paper did not partition the
 // map; here it is triangulated in 2D (delaunator, through LightProbeVolume's planar fallback) and
 // the fox and the white spheres are lit by the barycentric blend of their triangle's 3 probes.
-// Each panorama is projected to SH9 on the GPU (projectEquirectToSHGPU). Nothing is clamped: the
-// sunset's very bright sun rings in SH9, and that is left visible.
+// Each panorama is projected to SH9 on the GPU (projectEquirectToSHGPU). By default nothing is
+// windowed: a very bright sun rings in SH9, and that is left visible; the panel's de-ringing
+// strength and "irradiance never negative" switch apply to the volume's probes (the table shows
+// the raw panoramas).
 //
 // Query: assets (asset folder URL, default /assets/), layout, t (freeze time, seconds),
-// background=none, probes=0 (hide probe markers), hide=gui.
+// background=none, probes=0 (hide probe markers), hide=gui, deringing=s, nonnegative=1.
 // For tests: window.__demo (DemoReport) and window.__kyoto.addPanorama( url, x, z, name? ).
 
 interface Panorama extends KyotoPanorama { texture: THREE.Texture; sh: Float32Array; ms: number; minE: number; maxE: number; size: string }
@@ -35,6 +37,7 @@ const panoramas = new Map<string, Panorama>();
 const params = {
 	layout: layouts.some( ( l ) => l.name === query.get( 'layout' ) ) ? query.get( 'layout' )! : layouts[ 0 ].name,
 	background: query.get( 'background' ) === 'none' ? 'none' : 'strongest probe',
+	deringing: Number( query.get( 'deringing' ) ?? 0 ), nonNegative: query.get( 'nonnegative' ) === '1',
 	exposure: 1, table: window.innerWidth >= 900, triangles: true, probes: query.get( 'probes' ) !== '0', labels: query.get( 'probes' ) !== '0', animate: true,
 };
 
@@ -172,6 +175,8 @@ function buildVolume(): void {
 	volume?.dispose(); // restores the lit objects' materials
 	const sh = new Float32Array( 27 * probes.length );
 	probes.forEach( ( p, i ) => sh.set( panoramas.get( p.panorama )!.sh, 27 * i ) );
+	if ( params.nonNegative ) makeIrradianceNonNegative( sh, params.deringing );
+	else if ( params.deringing > 0 ) windowSH( sh, params.deringing, sh );
 	volume = new LightProbeVolume( {
 		positions: probes.flatMap( ( p ) => [ p.at[ 0 ], kyoto.height, p.at[ 1 ] ] ), sh,
 		names: probes.map( ( p ) => p.name ), roles: probes.map( ( p ) => p.role ),
@@ -357,6 +362,8 @@ function createGui(): void {
 	const gui = new GUI();
 	gui.add( params, 'layout', layouts.map( ( l ) => l.name ) ).onChange( buildVolume );
 	gui.add( params, 'background', [ 'strongest probe', 'none' ] );
+	gui.add( params, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( buildVolume );
+	gui.add( params, 'nonNegative' ).name( 'irradiance never negative' ).onChange( buildVolume );
 	gui.add( params, 'exposure', 0, 4, 0.01 ).onChange( ( value: number ) => { renderer.toneMappingExposure = value; } );
 	gui.add( params, 'table' ).name( 'show panorama table' );
 	gui.add( params, 'triangles' ).name( 'show triangles' );

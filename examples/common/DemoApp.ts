@@ -4,7 +4,7 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import GUI from 'lil-gui';
 import {
-	GridInterpolator, LightProbeVolume, evaluateIrradiance, irradianceMatrices,
+	GridInterpolator, LightProbeVolume, VisibilityGuard, evaluateIrradiance, irradianceMatrices,
 	type TetrahedralMesh,
 } from 'three-capture-lighting';
 import { loadCharacter, type Character } from './character.js';
@@ -47,6 +47,8 @@ export interface DemoReport {
 	/** Time between the last frames (what the user sees, GPU included), ms. */
 	intervalMs: number[];
 	character: 'fox' | 'fallback' | 'none';
+	/** With the visibility guard on: tetrahedra with an edge through static geometry. */
+	leakingCells?: number;
 	error: string;
 
 }
@@ -61,7 +63,8 @@ export interface DemoReport {
  * `resolution`, `spheres` (extra probe-lit spheres), `t` (freeze time at t seconds), `hide=gui`
  * (no panel, no stats), `probes=0` (hide the probe markers), `drop=name,name` (leave out the
  * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
- * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`.
+ * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`, `guard=1` (visibility
+ * guard on), `deringing=s` (window strength), `nonnegative=1`.
  */
 export class DemoApp {
 
@@ -75,7 +78,7 @@ export class DemoApp {
 	readonly assets: string;
 	/** Objects that must not appear in captures (markers, helpers, dynamic objects). */
 	readonly helpers = new THREE.Group();
-	readonly report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', error: '' };
+	readonly report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', leakingCells: 0, error: '' };
 
 	readonly params = {
 		layout: '',
@@ -86,6 +89,12 @@ export class DemoApp {
 		showCells: false,
 		animate: true,
 		edit: false,
+		/** Visibility guard: probes an object cannot see (through static geometry) do not light it. */
+		guard: false,
+		/** De-ringing window strength applied to each captured probe (0 = none). */
+		deringing: 0,
+		/** Raise the de-ringing where needed so that no probe's irradiance is negative. */
+		nonNegative: false,
 	};
 
 	private readonly options: DemoOptions;
@@ -106,7 +115,9 @@ export class DemoApp {
 	private time = 0;
 	private fps = 0;
 	private capturing = false;
-	private gui: GUI | null = null;
+	private guard: VisibilityGuard | null = null;
+	/** The lil-gui panel (null with `hide=gui`): pages add their own controls to it. */
+	gui: GUI | null = null;
 
 	constructor( options: DemoOptions ) {
 
@@ -118,6 +129,9 @@ export class DemoApp {
 		this.params.view = ( VIEWS as string[] ).includes( this.query.get( 'view' ) ?? '' ) ? this.query.get( 'view' ) as ViewMode : 'tetrahedral + diffuse';
 		this.params.resolution = Number( this.query.get( 'resolution' ) ?? 32 );
 		this.params.showProbes = this.query.get( 'probes' ) !== '0';
+		this.params.guard = this.query.get( 'guard' ) === '1';
+		this.params.deringing = Number( this.query.get( 'deringing' ) ?? 0 );
+		this.params.nonNegative = this.query.get( 'nonnegative' ) === '1';
 
 		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
 		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
@@ -264,13 +278,32 @@ export class DemoApp {
 		}
 
 		if ( this.params.interpolation === 'trilinear' && ! this.trilinear ) this.params.interpolation = 'tetrahedral';
+		this.applyGuard();
 		for ( const object of this.dynamicObjects ) this.activeVolume.add( object );
 		this.report.probes = this.volume.count;
 		this.gui?.controllersRecursive().forEach( ( c ) => c.updateDisplay() );
 
 	}
 
-	private get activeVolume(): LightProbeVolume {
+	/** Turns the visibility guard on or off on both volumes; its BVH of the static scene is built once. */
+	private applyGuard(): void {
+
+		if ( this.params.guard && ! this.guard ) {
+
+			const dynamic = new Set<THREE.Object3D>( [ this.helpers, ...this.dynamicObjects ] );
+			this.guard = new VisibilityGuard( this.scene.children.filter( ( object ) => ! dynamic.has( object ) ) );
+
+		}
+
+		const occluders = this.params.guard ? this.guard : null;
+		this.volume.setOccluders( occluders );
+		this.trilinear?.setOccluders( occluders );
+		this.report.leakingCells = this.params.guard ? this.volume.findLeakingTetrahedra().length : 0;
+
+	}
+
+	/** The volume lighting the dynamic objects now (tetrahedral, or the trilinear baseline). */
+	get activeVolume(): LightProbeVolume {
 
 		return this.params.interpolation === 'trilinear' && this.trilinear ? this.trilinear : this.volume;
 
@@ -286,6 +319,7 @@ export class DemoApp {
 
 			await this.volume.capture( this.renderer, this.scene, {
 				resolution: this.params.resolution, near: this.options.capture.near, far: this.options.capture.far, indices,
+				deringing: this.params.deringing, nonNegative: this.params.nonNegative,
 				exclude: [ this.helpers, ...this.dynamicObjects ],
 				onProgress: ( done, total ) => this.overlay.progress( `capturing ${done} / ${total} probes at ${this.params.resolution}²`, done / total ),
 			} );
@@ -326,6 +360,10 @@ export class DemoApp {
 		gui.add( p, 'showProbes' ).name( 'show probes' );
 		gui.add( p, 'showCells' ).name( 'show tetrahedra' );
 		gui.add( p, 'animate' );
+		const beyond = gui.addFolder( 'beyond the paper' );
+		beyond.add( p, 'guard' ).name( 'no light through walls' ).onChange( () => this.applyGuard() );
+		beyond.add( p, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( () => this.recapture() );
+		beyond.add( p, 'nonNegative' ).name( 'irradiance never negative' ).onChange( () => this.recapture() );
 		const edit = gui.addFolder( 'edit probes' );
 		edit.add( p, 'edit' ).name( 'click a probe to move it' ).onChange( () => this.select( - 1 ) );
 		edit.add( { add: () => this.addProbe() }, 'add' ).name( 'add probe at target' );
