@@ -12,6 +12,8 @@ export type { Tetrahedralization, TetrahedralizeOptions, DegenerateReason } from
 
 export type { ProbeInterpolator } from './interpolation/ProbeInterpolator.js';
 export { TetrahedralMesh } from './interpolation/TetrahedralMesh.js';
+export type { OutsideMode, TetrahedralMeshOptions, FromTetrahedralizationOptions } from './interpolation/TetrahedralMesh.js';
+export { OuterCells } from './interpolation/OuterCells.js';
 export { GridInterpolator } from './interpolation/GridInterpolator.js';
 export { PlanarMesh } from './interpolation/PlanarMesh.js';
 export { createProbeInterpolator } from './interpolation/createProbeInterpolator.js';

@@ -1,7 +1,38 @@
-import { assertInteger, assertNumber, assertOutput, assertPoints } from '../validate.js';
-import { tetrahedralize, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
+import { assertArrayLike, assertInteger, assertNumber, assertOutput, assertPoints } from '../validate.js';
+import { tetrahedralize, type Tetrahedralization, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
+import { orient } from '../tetrahedra/predicates.js';
 import { closestPointOnTriangle } from './closestPointOnTriangle.js';
+import { OuterCells } from './OuterCells.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
+
+/**
+ * What {@link TetrahedralMesh.interpolate} does outside the probes' convex hull:
+ * - `'outerCells'` (default): extrapolation by outer cells ({@link OuterCells}) — each hull
+ *   triangle swept outwards along its vertices' normals; continuous with the inside and across
+ *   cells, varying with the direction, found by a walk (cost independent of the hull's size).
+ * - `'nearestFace'`: the weights of the nearest point on the hull (a scan of every hull face);
+ *   constant along the outward direction.
+ */
+export type OutsideMode = 'outerCells' | 'nearestFace';
+
+/** Options of {@link TetrahedralMesh}. */
+export interface TetrahedralMeshOptions extends TetrahedralizeOptions {
+
+	/** Behaviour outside the convex hull. Default `'outerCells'`. */
+	outside?: OutsideMode;
+
+}
+
+/** Options of {@link TetrahedralMesh.fromTetrahedralization}. */
+export interface FromTetrahedralizationOptions {
+
+	/** Behaviour outside the convex hull. Default `'outerCells'`. */
+	outside?: OutsideMode;
+
+	/** Pairs (merged probe, probe it was merged into), as `tetrahedralize` reported them. Default none. */
+	duplicates?: ArrayLike<number>;
+
+}
 
 // Barycentric slack for points on shared faces: a point rounding 1e-12 outside a face still
 // belongs to the tetrahedron, or a walk could bounce between the two cells sharing it.
@@ -9,6 +40,18 @@ const INSIDE_EPSILON = 1e-12;
 
 const _weights = new Float64Array( 4 );
 const _closest = new Float64Array( 6 );
+const _outer = new Float64Array( 4 );
+
+// Where the last locate() that returned −1 left the mesh: the tetrahedron and the slot of the
+// hull face it stepped out through (−1 when a scan, not a walk, answered).
+let _exitTetrahedron = - 1, _exitSlot = 0;
+
+// Set by fromTetrahedralization for the constructor it calls: the stored arrays to use instead of
+// tetrahedralizing. Module state rather than a constructor argument keeps `new TetrahedralMesh`'s
+// public signature plain.
+let _stored: Tetrahedralization | null = null;
+
+const FROM = 'TetrahedralMesh.fromTetrahedralization';
 
 /**
  * Probe positions tetrahedralized for interpolation (paper section 2.4): a 3D Delaunay
@@ -17,8 +60,22 @@ const _closest = new Float64Array( 6 );
  *
  * Inside the convex hull of the probes the weights are the barycentric coordinates of the
  * containing tetrahedron: ≥ 0, summing to 1, exact for linear fields, continuous across faces.
- * Outside the hull the weights are those of the nearest point on the hull surface, which keeps
- * the field continuous and defined everywhere (it is constant along the outward direction).
+ *
+ * Outside the hull, by default, the weights come from outer cells ({@link OuterCells}): each hull
+ * triangle extended outwards along its vertices' averaged normals; the point's weights are its
+ * barycentric coordinates in the moved triangle whose plane it lies in (three probes, the fourth
+ * weight 0). They equal the inside weights on the hull, are continuous everywhere, follow the
+ * direction in which an object leaves (rather than freezing at the nearest hull point), and tend
+ * to a finite limit far away. The cell is found by walking from the hull face the interior walk
+ * left through (or from last frame's outer cell), so an outside query costs a few cells, not a
+ * scan of the hull. Where no outer cell's sweep reaches a point (possible only when the rays of
+ * a very irregular hull fold), the weights of the nearest point on the hull answer instead.
+ * `{ outside: 'nearestFace' }` selects that nearest-point behaviour everywhere outside (constant
+ * along the outward direction).
+ *
+ * Hints: {@link TetrahedralMesh.interpolate} returns a tetrahedron index (< `cellCount`) inside,
+ * and `cellCount + f` for outer cell f (the hull triangle `hullFaces[3f..3f+2]`) outside; pass it
+ * back next frame. {@link TetrahedralMesh.locate} accepts either kind of hint.
  *
  * ```js
  * const mesh = new TetrahedralMesh( positions );
@@ -50,47 +107,140 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	/** Hull triangles, 3 probe indices each, counter-clockwise seen from outside. */
 	readonly hullFaces: Uint32Array;
 
-	/** For each hull triangle, the tetrahedron it belongs to. */
+	/** For each hull triangle, the tetrahedron it belongs to (ascending). */
 	readonly hullFaceTetrahedra: Uint32Array;
+
+	/** For each hull triangle, the slot (0..3) in its tetrahedron of the vertex opposite it. */
+	readonly hullFaceSlots: Uint8Array;
+
+	/** The outer cells over the hull triangles (cell f extends `hullFaces[3f..3f+2]`). */
+	readonly outerCells: OuterCells;
+
+	/** Behaviour outside the convex hull. */
+	readonly outside: OutsideMode;
 
 	/** Always 4. */
 	readonly weightCount = 4;
 
 	/**
 	 * @param positions Flat x, y, z per probe; at least 4 probes not all in one plane.
-	 * @param options Passed to {@link tetrahedralize}.
+	 * @param options Behaviour outside the hull, and options passed to {@link tetrahedralize}.
 	 */
-	constructor( positions: ArrayLike<number>, options?: TetrahedralizeOptions ) {
+	constructor( positions: ArrayLike<number>, options: TetrahedralMeshOptions = {} ) {
 
-		assertPoints( 'TetrahedralMesh', 'positions', positions );
+		const stored = _stored;
+		_stored = null;
+		const outside = this.outside = options.outside ?? 'outerCells';
+		if ( outside !== 'outerCells' && outside !== 'nearestFace' ) throw new RangeError( `TetrahedralMesh: options.outside must be 'outerCells' or 'nearestFace', got ${String( outside )}.` );
+		if ( stored === null ) assertPoints( 'TetrahedralMesh', 'positions', positions );
 		this.positions = Float64Array.from( positions );
-		const { tetrahedra, neighbors, duplicates } = tetrahedralize( this.positions, options );
+		const { tetrahedra, neighbors, duplicates } = stored ?? tetrahedralize( this.positions, options );
 		this.tetrahedra = tetrahedra;
 		this.neighbors = neighbors;
 		this.duplicates = duplicates;
-		this.inverseMatrices = computeInverseMatrices( this.positions, tetrahedra );
+		this.inverseMatrices = computeInverseMatrices( this.positions, tetrahedra, stored !== null );
 
-		const faces: number[] = [], owners: number[] = [];
-		for ( let t = 0, n = tetrahedra.length / 4; t < n; t ++ ) {
+		// Hull faces: count first, so the arrays are allocated once (100,000-probe volumes load here).
+		const count = tetrahedra.length / 4;
+		let hullCount = 0;
+		for ( let i = 0; i < neighbors.length; i ++ ) if ( neighbors[ i ] === - 1 ) hullCount ++;
+		const faces = this.hullFaces = new Uint32Array( 3 * hullCount );
+		const owners = this.hullFaceTetrahedra = new Uint32Array( hullCount );
+		const slots = this.hullFaceSlots = new Uint8Array( hullCount );
+		let o = 0;
+		for ( let t = 0; t < count; t ++ ) {
 
 			for ( let i = 0; i < 4; i ++ ) {
 
 				if ( neighbors[ 4 * t + i ] !== - 1 ) continue;
 				// The face without vertex i, ordered so that vertex i is on its negative side: for a
 				// positive tetrahedron that makes it counter-clockwise seen from outside.
-				const v = tetrahedra.subarray( 4 * t, 4 * t + 4 );
-				if ( i === 0 ) faces.push( v[ 1 ], v[ 2 ], v[ 3 ] );
-				else if ( i === 1 ) faces.push( v[ 0 ], v[ 3 ], v[ 2 ] );
-				else if ( i === 2 ) faces.push( v[ 0 ], v[ 1 ], v[ 3 ] );
-				else faces.push( v[ 0 ], v[ 2 ], v[ 1 ] );
-				owners.push( t );
+				const k = 4 * t, f = 3 * o;
+				const v0 = tetrahedra[ k ], v1 = tetrahedra[ k + 1 ], v2 = tetrahedra[ k + 2 ], v3 = tetrahedra[ k + 3 ];
+				if ( i === 0 ) { faces[ f ] = v1; faces[ f + 1 ] = v2; faces[ f + 2 ] = v3; }
+				else if ( i === 1 ) { faces[ f ] = v0; faces[ f + 1 ] = v3; faces[ f + 2 ] = v2; }
+				else if ( i === 2 ) { faces[ f ] = v0; faces[ f + 1 ] = v1; faces[ f + 2 ] = v3; }
+				else { faces[ f ] = v0; faces[ f + 1 ] = v2; faces[ f + 2 ] = v1; }
+				owners[ o ] = t; slots[ o ] = i;
+				o ++;
 
 			}
 
 		}
 
-		this.hullFaces = Uint32Array.from( faces );
-		this.hullFaceTetrahedra = Uint32Array.from( owners );
+		this.outerCells = new OuterCells( this.positions, faces, stored ? FROM : 'TetrahedralMesh' );
+
+	}
+
+	/**
+	 * A mesh from a stored tetrahedralization (e.g. baked data), without tetrahedralizing again.
+	 * Checks in O(n), naming the first problem: lengths, indices out of range, non-finite positions,
+	 * neighbours that are not symmetric or do not share the face, tetrahedra that are not
+	 * positively oriented, hull faces (neighbour −1) that do not form one closed convex surface. It
+	 * does not check the Delaunay property or that the tetrahedra do not overlap. `tetrahedra` and `neighbors` are kept
+	 * by reference when they are already a `Uint32Array` and an `Int32Array`.
+	 * @param positions Flat x, y, z per probe.
+	 * @param tetrahedra Four probe indices per tetrahedron, positively oriented.
+	 * @param neighbors `neighbors[4t + i]`: the tetrahedron across the face opposite vertex i of t, or −1.
+	 * @throws Error naming the argument and the problem.
+	 */
+	static fromTetrahedralization( positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, options: FromTetrahedralizationOptions = {} ): TetrahedralMesh {
+
+		const probeCount = assertPoints( FROM, 'positions', positions, 4 );
+		assertArrayLike( FROM, 'tetrahedra', tetrahedra );
+		assertArrayLike( FROM, 'neighbors', neighbors );
+		if ( tetrahedra.length === 0 || tetrahedra.length % 4 !== 0 ) throw new RangeError( `${FROM}: tetrahedra must hold 4 indices per tetrahedron (a positive multiple of 4), got length ${tetrahedra.length}.` );
+		if ( neighbors.length !== tetrahedra.length ) throw new RangeError( `${FROM}: neighbors must have one entry per tetrahedron face (length ${tetrahedra.length}), got length ${neighbors.length}.` );
+		const count = tetrahedra.length / 4;
+		const tets = tetrahedra instanceof Uint32Array ? tetrahedra : new Uint32Array( tetrahedra.length );
+		const adjacent = neighbors instanceof Int32Array ? neighbors : new Int32Array( neighbors.length );
+		for ( let i = 0; i < tetrahedra.length; i ++ ) {
+
+			const v = tetrahedra[ i ];
+			if ( ! Number.isInteger( v ) || v < 0 || v >= probeCount ) throw new RangeError( `${FROM}: tetrahedra[${i}] = ${v} is not a probe index (0..${probeCount - 1}).` );
+			tets[ i ] = v;
+			const u = neighbors[ i ];
+			if ( ! Number.isInteger( u ) || u < - 1 || u >= count ) throw new RangeError( `${FROM}: neighbors[${i}] = ${u} is neither −1 nor a tetrahedron index (0..${count - 1}).` );
+			adjacent[ i ] = u;
+
+		}
+
+		for ( let t = 0; t < count; t ++ ) {
+
+			const k = 4 * t;
+			for ( let i = 0; i < 4; i ++ ) {
+
+				const u = adjacent[ k + i ];
+				if ( u === - 1 ) continue;
+				// The slot j of u whose vertex is not on t's face; the other three must be that face.
+				let j = - 1, shared = 0;
+				for ( let m = 0; m < 4; m ++ ) {
+
+					const v = tets[ 4 * u + m ];
+					let onFace = false;
+					for ( let n = 0; n < 4; n ++ ) if ( n !== i && tets[ k + n ] === v ) onFace = true;
+					if ( onFace ) shared ++; else j = m;
+
+				}
+
+				if ( shared !== 3 || j < 0 || tets[ 4 * u + j ] === tets[ k + i ] ) throw new Error( `${FROM}: neighbors[${k + i}] = ${u}, but tetrahedron ${u} does not share the face opposite vertex ${i} of tetrahedron ${t}.` );
+				if ( adjacent[ 4 * u + j ] !== t ) throw new Error( `${FROM}: neighbours are not symmetric: neighbors[${k + i}] = ${u} but neighbors[${4 * u + j}] = ${adjacent[ 4 * u + j ]}, not ${t}.` );
+
+			}
+
+		}
+
+		const duplicates = options.duplicates ? Uint32Array.from( options.duplicates ) : new Uint32Array( 0 );
+		_stored = { tetrahedra: tets, neighbors: adjacent, duplicates };
+		try {
+
+			return new TetrahedralMesh( positions, { outside: options.outside } );
+
+		} finally {
+
+			_stored = null;
+
+		}
 
 	}
 
@@ -113,13 +263,15 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * each time across the face with the most negative barycentric weight. In a Delaunay mesh that
 	 * walk cannot cycle in exact arithmetic; a step budget guards against rounding, after which a
 	 * full scan answers.
-	 * @param hint A tetrahedron near the point (e.g. last frame's), or −1.
+	 * @param hint A tetrahedron near the point (e.g. last frame's), a hint returned by
+	 * {@link TetrahedralMesh.interpolate} (an outer cell starts from its hull face's tetrahedron), or −1.
 	 * @returns The tetrahedron index, or −1 when the point is outside the convex hull.
 	 */
 	locate( x: number, y: number, z: number, hint = - 1 ): number {
 
 		const count = this.tetrahedra.length / 4;
 		let t = hint >= 0 && hint < count ? hint | 0 : 0;
+		if ( hint >= count && hint - count < this.hullFaceTetrahedra.length ) t = this.hullFaceTetrahedra[ hint - count ];
 		const neighbors = this.neighbors, m = this.inverseMatrices, p = this.positions, tetrahedra = this.tetrahedra;
 		for ( let steps = 0; steps <= count; steps ++ ) {
 
@@ -139,16 +291,17 @@ export class TetrahedralMesh implements ProbeInterpolator {
 			if ( w3 < worstValue ) { worstValue = w3; worst = 3; }
 			if ( worstValue >= - INSIDE_EPSILON ) return t;
 			const next = neighbors[ 4 * t + worst ];
-			// Beyond a hull face's plane means outside the (convex) hull.
-			if ( next === - 1 ) return - 1;
+			// Beyond a hull face's plane means outside the (convex) hull; remember the face for the
+			// outer-cell walk.
+			if ( next === - 1 ) { _exitTetrahedron = t; _exitSlot = worst; return - 1; }
 			t = next;
 
 		}
 
+		_exitTetrahedron = - 1;
 		return this.locateByScan( x, y, z );
 
 	}
-
 	/** Checks every tetrahedron; the fallback when a walk runs out of steps. */
 	private locateByScan( x: number, y: number, z: number ): number {
 
@@ -181,47 +334,66 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	}
 
 	/**
-	 * Probes and weights for (x, y, z): the containing tetrahedron's barycentric weights, or outside
-	 * the hull, those of the nearest point on the hull (one weight is then 0). Allocation-free.
-	 * @returns The tetrahedron used (containing the point, or owning the nearest hull face): pass it
-	 * back as `hint` next time.
+	 * Probes and weights for (x, y, z): inside the hull the containing tetrahedron's barycentric
+	 * weights; outside, the outer cell's three weights (or, with `outside: 'nearestFace'`, those of
+	 * the nearest point on the hull) and a fourth probe with weight 0. Weights are ≥ 0 and sum to 1.
+	 * Allocation-free.
+	 * @param hint The value this method returned last time for a nearby point, or −1.
+	 * @returns The hint for next time: the tetrahedron containing the point (< `cellCount`), or
+	 * `cellCount + f` for outer cell f; with `'nearestFace'`, the tetrahedron owning the nearest hull face.
+	 * @throws RangeError when a coordinate is NaN or infinite.
 	 */
 	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
 
-		const tetrahedra = this.tetrahedra;
-		let t = this.locate( x, y, z, hint ); // leaves t's weights in _weights
-		if ( t >= 0 ) {
+		// x − x is 0 for every finite number and NaN for NaN and ±Infinity: one test for all three.
+		if ( ! ( x - x === 0 && y - y === 0 && z - z === 0 ) ) {
 
-			// Clamp the slack the walk allowed, so weights stay ≥ 0 and sum to 1.
-			const w0 = _weights[ 0 ] > 0 ? _weights[ 0 ] : 0, w1 = _weights[ 1 ] > 0 ? _weights[ 1 ] : 0;
-			const w2 = _weights[ 2 ] > 0 ? _weights[ 2 ] : 0, w3 = _weights[ 3 ] > 0 ? _weights[ 3 ] : 0;
-			const s = 1 / ( w0 + w1 + w2 + w3 ), k = 4 * t;
-			indices[ 0 ] = tetrahedra[ k ]; indices[ 1 ] = tetrahedra[ k + 1 ]; indices[ 2 ] = tetrahedra[ k + 2 ]; indices[ 3 ] = tetrahedra[ k + 3 ];
-			weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = w3 * s;
-			return t;
+			assertNumber( 'TetrahedralMesh.interpolate', 'x', x );
+			assertNumber( 'TetrahedralMesh.interpolate', 'y', y );
+			assertNumber( 'TetrahedralMesh.interpolate', 'z', z );
 
 		}
 
-		const face = this.nearestHullFace( x, y, z );
-		t = this.hullFaceTetrahedra[ face ];
-		const f = 3 * face;
-		for ( let i = 0; i < 3; i ++ ) {
+		const tetrahedra = this.tetrahedra, count = tetrahedra.length / 4;
+		let face = - 1;
+		if ( hint >= count && this.outside === 'outerCells' ) {
 
-			indices[ i ] = this.hullFaces[ f + i ];
-			weights[ i ] = _closest[ 3 + i ];
-
-		}
-
-		// The fourth slot: the tetrahedron's vertex off the face, with weight 0.
-		for ( let i = 0; i < 4; i ++ ) {
-
-			const v = tetrahedra[ 4 * t + i ];
-			if ( v !== indices[ 0 ] && v !== indices[ 1 ] && v !== indices[ 2 ] ) indices[ 3 ] = v;
+			// Last time outside: while the point is beyond that hull face's plane it is still
+			// outside (the hull is convex), and the interior walk can be skipped.
+			const f = hint - count;
+			if ( f < this.hullFaceTetrahedra.length && this.outerCells.isBeyond( f, x, y, z ) ) face = f;
 
 		}
 
-		weights[ 3 ] = 0;
-		return t;
+		if ( face < 0 ) {
+
+			const t = this.locate( x, y, z, hint ); // leaves t's weights in _weights
+			if ( t >= 0 ) {
+
+				// Clamp the slack the walk allowed, so weights stay ≥ 0 and sum to 1.
+				const w0 = _weights[ 0 ] > 0 ? _weights[ 0 ] : 0, w1 = _weights[ 1 ] > 0 ? _weights[ 1 ] : 0;
+				const w2 = _weights[ 2 ] > 0 ? _weights[ 2 ] : 0, w3 = _weights[ 3 ] > 0 ? _weights[ 3 ] : 0;
+				const s = 1 / ( w0 + w1 + w2 + w3 ), k = 4 * t;
+				indices[ 0 ] = tetrahedra[ k ]; indices[ 1 ] = tetrahedra[ k + 1 ]; indices[ 2 ] = tetrahedra[ k + 2 ]; indices[ 3 ] = tetrahedra[ k + 3 ];
+				weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = w3 * s;
+				return t;
+
+			}
+
+			if ( this.outside === 'nearestFace' ) return this.interpolateNearestFace( x, y, z, indices, weights, false );
+			face = _exitTetrahedron >= 0 ? this.hullFaceOf( _exitTetrahedron, _exitSlot ) : 0;
+
+		}
+
+		const f = this.outerCells.locate( x, y, z, face, _outer );
+		if ( f < 0 ) return this.interpolateNearestFace( x, y, z, indices, weights, true );
+
+		// Clamp the slack the walk allowed (as inside).
+		const w0 = _outer[ 1 ] > 0 ? _outer[ 1 ] : 0, w1 = _outer[ 2 ] > 0 ? _outer[ 2 ] : 0, w2 = _outer[ 3 ] > 0 ? _outer[ 3 ] : 0;
+		const s = 1 / ( w0 + w1 + w2 );
+		this.writeFace( f, indices );
+		weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = 0;
+		return count + f;
 
 	}
 
@@ -241,6 +413,45 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 	}
 
+	/**
+	 * The weights of the nearest point on the hull (a scan of every hull face).
+	 * @param outerHint Return `cellCount + face` (the outer-cell fallback) rather than the face's tetrahedron.
+	 */
+	private interpolateNearestFace( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], outerHint: boolean ): number {
+
+		const face = this.nearestHullFace( x, y, z );
+		this.writeFace( face, indices );
+		weights[ 0 ] = _closest[ 3 ]; weights[ 1 ] = _closest[ 4 ]; weights[ 2 ] = _closest[ 5 ]; weights[ 3 ] = 0;
+		return outerHint ? this.tetrahedra.length / 4 + face : this.hullFaceTetrahedra[ face ];
+
+	}
+
+	/** Writes hull face f's three probes, then its tetrahedron's vertex off the face (the zero-weight slot). */
+	private writeFace( f: number, indices: Uint32Array | number[] ): void {
+
+		const faces = this.hullFaces;
+		indices[ 0 ] = faces[ 3 * f ]; indices[ 1 ] = faces[ 3 * f + 1 ]; indices[ 2 ] = faces[ 3 * f + 2 ];
+		indices[ 3 ] = this.tetrahedra[ 4 * this.hullFaceTetrahedra[ f ] + this.hullFaceSlots[ f ] ];
+
+	}
+
+	/** The hull face opposite slot `slot` of tetrahedron t (a binary search: hull faces are stored by tetrahedron). */
+	private hullFaceOf( t: number, slot: number ): number {
+
+		const owners = this.hullFaceTetrahedra;
+		let lo = 0, hi = owners.length - 1;
+		while ( lo < hi ) {
+
+			const mid = ( lo + hi ) >>> 1;
+			if ( owners[ mid ] < t ) lo = mid + 1; else hi = mid;
+
+		}
+
+		for ( let f = lo; f < owners.length && owners[ f ] === t; f ++ ) if ( this.hullFaceSlots[ f ] === slot ) return f;
+		return 0;
+
+	}
+
 	/** Index of the hull triangle nearest to (x, y, z); leaves its closest point in `_closest`. */
 	private nearestHullFace( x: number, y: number, z: number ): number {
 
@@ -251,7 +462,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 			const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
 			const d = closestPointOnTriangle( x, y, z, p[ a ], p[ a + 1 ], p[ a + 2 ], p[ b ], p[ b + 1 ], p[ b + 2 ], p[ c ], p[ c + 1 ], p[ c + 2 ], _closest );
-			if ( d < bestDistance ) {
+			// The first face always counts, so a distance that overflowed to Infinity still answers.
+			if ( d < bestDistance || best < 0 ) {
 
 				bestDistance = d;
 				best = f;
@@ -268,7 +480,12 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 }
 
-function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array ): Float64Array {
+/**
+ * Per tetrahedron, the inverse of [p0 − p3, p1 − p3, p2 − p3].
+ * @param check Throw when a tetrahedron is not positively oriented (stored data; tetrahedralize's
+ * own output is positive by construction).
+ */
+function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array, check: boolean ): Float64Array {
 
 	const count = tetrahedra.length / 4;
 	const out = new Float64Array( 9 * count );
@@ -282,6 +499,13 @@ function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array ): Flo
 		// M = [[a, b, c], [d, e, f], [g, h, i]]; inverse by cofactors.
 		const A = e * i - f * h, B = - ( d * i - f * g ), C = d * h - e * g;
 		const det = a * A + b * B + c * C;
+		// det M = −det[p1 − p0, p2 − p0, p3 − p0]; a rounded det of the wrong sign is settled exactly.
+		if ( check && ! ( det < 0 ) && orient( p, i0 / 3, i1 / 3, i2 / 3, i3 / 3 ) <= 0 ) {
+
+			throw new Error( `${FROM}: tetrahedron ${t} (probes ${i0 / 3}, ${i1 / 3}, ${i2 / 3}, ${i3 / 3}) is not positively oriented (det[p1 − p0, p2 − p0, p3 − p0] ≤ 0).` );
+
+		}
+
 		const s = 1 / det;
 		const k = 9 * t;
 		out[ k ] = A * s; out[ k + 1 ] = - ( b * i - c * h ) * s; out[ k + 2 ] = ( b * f - c * e ) * s;

@@ -1,5 +1,5 @@
-import { DegenerateInputError, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
-import { TetrahedralMesh } from './TetrahedralMesh.js';
+import { DegenerateInputError } from '../tetrahedra/tetrahedralize.js';
+import { TetrahedralMesh, type TetrahedralMeshOptions } from './TetrahedralMesh.js';
 import { PlanarMesh } from './PlanarMesh.js';
 
 /**
@@ -8,7 +8,7 @@ import { PlanarMesh } from './PlanarMesh.js';
  * in their best-fit plane, so flat layouts still interpolate.
  * @throws {DegenerateInputError} for fewer than 3 distinct probes or probes on one line.
  */
-export function createProbeInterpolator( positions: ArrayLike<number>, options: TetrahedralizeOptions = {} ): TetrahedralMesh | PlanarMesh {
+export function createProbeInterpolator( positions: ArrayLike<number>, options: TetrahedralMeshOptions = {} ): TetrahedralMesh | PlanarMesh {
 
 	try {
 

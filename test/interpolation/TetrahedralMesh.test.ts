@@ -176,9 +176,9 @@ describe( 'TetrahedralMesh', () => {
 
 	} );
 
-	it( 'outside the hull: weights of the nearest hull point, continuous along a path that leaves the hull', () => {
+	it( "outside the hull with { outside: 'nearestFace' }: weights of the nearest hull point, continuous along a path that leaves the hull", () => {
 
-		const grid = new TetrahedralMesh( gridPoints( 3, 3, 3, 1 ) ); // the cube [0, 2]³
+		const grid = new TetrahedralMesh( gridPoints( 3, 3, 3, 1 ), { outside: 'nearestFace' } ); // the cube [0, 2]³
 		const f = ( x: number, y: number, z: number ) => x + 2 * y + 3 * z;
 		const sample = ( x: number, y: number, z: number, hint: number ) => {
 
