@@ -4,7 +4,7 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import GUI from 'lil-gui';
 import {
-	GridInterpolator, LightProbeVolume, VisibilityGuard, evaluateIrradiance, irradianceMatrices,
+	GridInterpolator, LightProbeVolume, VisibilityGuard, createProbeInterpolator, evaluateIrradiance, irradianceMatrices,
 	type TetrahedralMesh,
 } from 'three-capture-lighting';
 import { loadCharacter, type Character } from './character.js';
@@ -64,7 +64,7 @@ export interface DemoReport {
  * (no panel, no stats), `probes=0` (hide the probe markers), `drop=name,name` (leave out the
  * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
  * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`, `guard=1` (visibility
- * guard on), `deringing=s` (window strength), `nonnegative=1`.
+ * guard on), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`.
  */
 export class DemoApp {
 
@@ -91,6 +91,8 @@ export class DemoApp {
 		edit: false,
 		/** Visibility guard: probes an object cannot see (through static geometry) do not light it. */
 		guard: false,
+		/** Outside the probes' hull: outer cells (continuous fade-out) or the nearest hull point (the old rule). */
+		outside: 'outer cells' as 'outer cells' | 'nearest face',
 		/** De-ringing window strength applied to each captured probe (0 = none). */
 		deringing: 0,
 		/** Raise the de-ringing where needed so that no probe's irradiance is negative. */
@@ -130,6 +132,7 @@ export class DemoApp {
 		this.params.resolution = Number( this.query.get( 'resolution' ) ?? 32 );
 		this.params.showProbes = this.query.get( 'probes' ) !== '0';
 		this.params.guard = this.query.get( 'guard' ) === '1';
+		this.params.outside = this.query.get( 'outside' ) === 'nearest' ? 'nearest face' : 'outer cells';
 		this.params.deringing = Number( this.query.get( 'deringing' ) ?? 0 );
 		this.params.nonNegative = this.query.get( 'nonnegative' ) === '1';
 
@@ -268,7 +271,8 @@ export class DemoApp {
 
 		const layout = this.layout;
 		for ( const object of this.dynamicObjects ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
-		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh } );
+		const interpolator = createProbeInterpolator( layout.positions, { outside: this.params.outside === 'nearest face' ? 'nearestFace' : 'outerCells' } );
+		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator } );
 		this.trilinear = null;
 		if ( layout.grid ) {
 
@@ -361,6 +365,7 @@ export class DemoApp {
 		gui.add( p, 'showCells' ).name( 'show tetrahedra' );
 		gui.add( p, 'animate' );
 		const beyond = gui.addFolder( 'beyond the paper' );
+		beyond.add( p, 'outside', [ 'outer cells', 'nearest face' ] ).name( 'outside the hull' ).onChange( () => this.rebuildVolume( this.volume.sh ) );
 		beyond.add( p, 'guard' ).name( 'no light through walls' ).onChange( () => this.applyGuard() );
 		beyond.add( p, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( () => this.recapture() );
 		beyond.add( p, 'nonNegative' ).name( 'irradiance never negative' ).onChange( () => this.recapture() );
