@@ -1,0 +1,185 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { BoxGeometry, Mesh, MeshStandardMaterial, Scene } from 'three';
+import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
+import { GLTFLoader, type GLTF } from 'three/addons/loaders/GLTFLoader.js';
+import {
+	GLTFLightProbeVolumeExporterPlugin, GLTFLightProbeVolumeLoaderPlugin, GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry,
+} from '../../src/io/GLTFLightProbeVolumeExtension.js';
+import { decodeBakedVolume, type BakedVolumeInput } from '../../src/io/BakedVolume.js';
+import { BakedVolumeError } from '../../src/io/BakedVolumeError.js';
+import { makeVolume, independentCheck } from './helpers.js';
+
+/*
+ * Node 20 gaps, stubbed here and nothing else: GLTFExporter writes through the browser's
+ * FileReader (absent: a minimal one over Blob.arrayBuffer() stands in), and three's FileLoader,
+ * which GLTFLoader uses for a .gltf's data: URI buffers, creates ProgressEvents (absent: without
+ * one the load never finishes). The scene has no textures (those need a canvas in Node).
+ */
+beforeAll( () => {
+
+	if ( typeof ( globalThis as { ProgressEvent?: unknown } ).ProgressEvent === 'undefined' ) {
+
+		( globalThis as { ProgressEvent?: unknown } ).ProgressEvent = class extends Event {
+
+			readonly lengthComputable: boolean; readonly loaded: number; readonly total: number;
+			constructor( type: string, init: { lengthComputable?: boolean; loaded?: number; total?: number } = {} ) {
+
+				super( type );
+				this.lengthComputable = init.lengthComputable ?? false;
+				this.loaded = init.loaded ?? 0;
+				this.total = init.total ?? 0;
+
+			}
+
+		};
+
+	}
+
+	if ( typeof ( globalThis as { FileReader?: unknown } ).FileReader !== 'undefined' ) return;
+	class NodeFileReader {
+
+		result: ArrayBuffer | string | null = null;
+		onloadend: ( () => void ) | null = null;
+		readAsArrayBuffer( blob: Blob ): void {
+
+			void blob.arrayBuffer().then( ( buffer ) => {
+
+				this.result = buffer;
+				this.onloadend?.();
+
+			} );
+
+		}
+
+		readAsDataURL( blob: Blob ): void {
+
+			void blob.arrayBuffer().then( ( buffer ) => {
+
+				this.result = `data:${blob.type || 'application/octet-stream'};base64,${Buffer.from( buffer ).toString( 'base64' )}`;
+				this.onloadend?.();
+
+			} );
+
+		}
+
+	}
+
+	( globalThis as { FileReader?: unknown } ).FileReader = NodeFileReader;
+
+} );
+
+function tinyScene(): Scene {
+
+	const scene = new Scene();
+	scene.add( new Mesh( new BoxGeometry( 1, 2, 3 ), new MeshStandardMaterial( { color: 0x808080 } ) ) );
+	return scene;
+
+}
+
+async function exportGLB( volumes: GLTFLightProbeVolumeEntry<BakedVolumeInput>[], precision: 'float16' | 'float32' ): Promise<ArrayBuffer> {
+
+	const exporter = new GLTFExporter();
+	exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, volumes, { precision } ) );
+	return await exporter.parseAsync( tinyScene(), { binary: true } ) as ArrayBuffer;
+
+}
+
+function load( data: ArrayBuffer | string ): Promise<GLTF> {
+
+	const loader = new GLTFLoader();
+	loader.register( ( parser ) => new GLTFLightProbeVolumeLoaderPlugin( parser ) );
+	return loader.parseAsync( data, '' );
+
+}
+
+/** The JSON chunk of a .glb. */
+function glbJSON( glb: ArrayBuffer ): Record<string, unknown> & { extensions: Record<string, { volumes: { name?: string; bufferView: number }[] }>; bufferViews: { byteOffset: number; byteLength: number }[] } {
+
+	const view = new DataView( glb );
+	const length = view.getUint32( 12, true );
+	return JSON.parse( new TextDecoder().decode( new Uint8Array( glb, 20, length ) ) );
+
+}
+
+describe( 'glTF extension ' + GLTF_LIGHT_PROBE_VOLUME_EXTENSION, () => {
+
+	const a = makeVolume( 30, 8 ), b = makeVolume( 12, 9, false );
+
+	it( 'GLTFExporter → .glb → GLTFLoader returns both volumes, the mesh is intact, float32 exact', async () => {
+
+		const glb = await exportGLB( [ { name: 'hall', data: a }, { name: '', data: b } ], 'float32' );
+		const json = glbJSON( glb );
+		expect( json.extensionsUsed ).toContain( GLTF_LIGHT_PROBE_VOLUME_EXTENSION );
+		const entries = json.extensions[ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ].volumes;
+		expect( entries ).toEqual( [ { name: 'hall', bufferView: expect.any( Number ) }, { bufferView: expect.any( Number ) } ] );
+		for ( const entry of entries ) expect( json.bufferViews[ entry.bufferView ].byteOffset % 8 ).toBe( 0 );
+
+		const gltf = await load( glb );
+		expect( gltf.scene.children[ 0 ] ).toBeInstanceOf( Mesh );
+		const volumes = gltf.userData.lightProbeVolumes as GLTFLightProbeVolumeEntry[];
+		expect( volumes.map( ( v ) => v.name ) ).toEqual( [ 'hall', '' ] );
+		expect( Array.from( volumes[ 0 ].data.positions ) ).toEqual( Array.from( a.positions ) );
+		expect( Array.from( volumes[ 0 ].data.sh ) ).toEqual( Array.from( a.sh ) );
+		expect( Array.from( volumes[ 0 ].data.tetrahedra ) ).toEqual( Array.from( a.tetrahedra ) );
+		expect( volumes[ 0 ].data.names ).toEqual( a.names );
+		expect( volumes[ 0 ].data.capture ).toEqual( a.capture );
+		expect( Array.from( volumes[ 1 ].data.neighbors ) ).toEqual( Array.from( b.neighbors ) );
+		expect( independentCheck( volumes[ 1 ].data ) ).toBeNull();
+
+	} );
+
+	it( 'float16 inside a .glb: SH within half precision', async () => {
+
+		const gltf = await load( await exportGLB( [ { name: 'hall', data: a } ], 'float16' ) );
+		const sh = ( gltf.userData.lightProbeVolumes as GLTFLightProbeVolumeEntry[] )[ 0 ].data.sh;
+		for ( let i = 0; i < sh.length; i ++ ) expect( Math.abs( sh[ i ] - a.sh[ i ] ) ).toBeLessThanOrEqual( Math.max( Math.abs( a.sh[ i ] ) * 2 ** - 11, 2 ** - 25 ) );
+
+	} );
+
+	it( 'the bufferView bytes are exactly the binary format (readable without three.js)', async () => {
+
+		const glb = await exportGLB( [ { name: 'hall', data: a } ], 'float32' );
+		const json = glbJSON( glb );
+		const jsonLength = new DataView( glb ).getUint32( 12, true );
+		const binStart = 20 + jsonLength + 8;
+		const { byteOffset, byteLength } = json.bufferViews[ json.extensions[ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ].volumes[ 0 ].bufferView ];
+		const d = decodeBakedVolume( new Uint8Array( glb, binStart + byteOffset, byteLength ) );
+		expect( Array.from( d.positions ) ).toEqual( Array.from( a.positions ) );
+
+	} );
+
+	it( 'a .gltf (JSON with a data: URI buffer) carries the volume too', async () => {
+
+		const exporter = new GLTFExporter();
+		exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, a ) );
+		const json = await exporter.parseAsync( tinyScene(), { binary: false } );
+		const gltf = await load( JSON.stringify( json ) );
+		expect( Array.from( ( gltf.userData.lightProbeVolumes as GLTFLightProbeVolumeEntry[] )[ 0 ].data.sh ) ).toEqual( Array.from( a.sh ) );
+
+	} );
+
+	it( 'a corrupted volume inside the .glb rejects the load with BakedVolumeError "corrupted"; a bad bufferView index with code range', async () => {
+
+		const glb = await exportGLB( [ { name: 'hall', data: a } ], 'float32' );
+		const json = glbJSON( glb );
+		const jsonLength = new DataView( glb ).getUint32( 12, true );
+		const { byteOffset } = json.bufferViews[ json.extensions[ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ].volumes[ 0 ].bufferView ];
+		const corrupted = glb.slice( 0 );
+		new Uint8Array( corrupted )[ 20 + jsonLength + 8 + byteOffset + 200 ] ^= 1;
+		await expect( load( corrupted ) ).rejects.toThrow( /corrupted/ );
+		await expect( load( corrupted ) ).rejects.toBeInstanceOf( BakedVolumeError );
+
+		const bad = { asset: { version: '2.0' }, extensionsUsed: [ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ], extensions: { [ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ]: { volumes: [ { bufferView: 3 } ] } } };
+		await expect( load( JSON.stringify( bad ) ) ).rejects.toMatchObject( { name: 'BakedVolumeError', code: 'range' } );
+
+	} );
+
+	it( 'a file without the extension loads as before (no lightProbeVolumes)', async () => {
+
+		const exporter = new GLTFExporter();
+		const gltf = await load( await exporter.parseAsync( tinyScene(), { binary: true } ) as ArrayBuffer );
+		expect( gltf.userData.lightProbeVolumes ).toBeUndefined();
+
+	} );
+
+} );
