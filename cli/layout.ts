@@ -1,0 +1,154 @@
+import { existsSync, readFileSync, statSync } from 'node:fs';
+import { DegenerateInputError, tetrahedralize, type Tetrahedralization } from '../src/tetrahedra/tetrahedralize.js';
+import { BAKED_ROLES as ROLES, validateBakedVolume, type BakedProbeRole as ProbeRole } from '../src/io/index.js';
+import { CliError } from './errors.js';
+
+const AXES = [ 'x', 'y', 'z' ];
+
+/** A validated probe layout (the JSON of scenes/*.json). */
+export interface CliLayout {
+
+	name: string;
+	positions: Float64Array;
+	names: string[];
+	roles: ProbeRole[];
+	/** Named groups of probes, passed to the volume as they are (the codec checks them). */
+	zones: { name: string; probes: number[]; bounds?: number[] }[];
+
+}
+
+/**
+ * Reads and validates a probe layout file: `{ name?, positions: number[], names?: string[], roles?: string[], zones?: [...] }`.
+ * Names default to '' (none), roles to "fill".
+ * @param file Path of the JSON file (named in every message).
+ * @throws {CliError} exit code 2: missing or unreadable file, bad JSON, a coordinate that is not a
+ * finite number (naming the probe and axis), fewer than 4 probes, names/roles of the wrong length,
+ * an unknown role.
+ */
+export function readLayout( file: string ): CliLayout {
+
+	if ( ! existsSync( file ) ) throw new CliError( `probe layout ${file} not found.` );
+	if ( ! statSync( file ).isFile() ) throw new CliError( `probe layout ${file} is not a file.` );
+	let json: unknown;
+	try {
+
+		json = JSON.parse( readFileSync( file, 'utf8' ) );
+
+	} catch ( error ) {
+
+		throw new CliError( `probe layout ${file} is not valid JSON (${( error as Error ).message}); NaN and Infinity cannot be written in JSON.` );
+
+	}
+
+	if ( json === null || typeof json !== 'object' || Array.isArray( json ) ) throw new CliError( `probe layout ${file} must be a JSON object { "positions": [x, y, z, ...] }.` );
+	const layout = json as Record<string, unknown>;
+	const raw = layout.positions;
+	if ( ! Array.isArray( raw ) ) throw new CliError( `probe layout ${file} has no "positions" array.` );
+	if ( raw.length % 3 !== 0 ) throw new CliError( `probe layout ${file}: "positions" must hold x, y, z per probe (a multiple of 3 numbers), got ${raw.length} numbers.` );
+	const count = raw.length / 3;
+	for ( let i = 0; i < raw.length; i ++ ) {
+
+		const v = raw[ i ];
+		if ( typeof v !== 'number' || ! Number.isFinite( v ) ) {
+
+			throw new CliError( `probe layout ${file}: probe ${Math.floor( i / 3 )} has ${AXES[ i % 3 ]} = ${JSON.stringify( v )} (positions[${i}]); every coordinate must be a finite number.` );
+
+		}
+
+	}
+
+	if ( count < 4 ) throw new CliError( `probe layout ${file} has ${count} probe${count === 1 ? '' : 's'}; a volume needs at least 4 (not all in one plane).` );
+
+	const names = optionalList( file, layout, 'names', count, () => '' );
+	names.forEach( ( name, i ) => {
+
+		if ( typeof name !== 'string' ) throw new CliError( `probe layout ${file}: names[${i}] (probe ${i}) is ${JSON.stringify( name )}; names must be strings.` );
+
+	} );
+	const roles = optionalList( file, layout, 'roles', count, () => 'fill' );
+	roles.forEach( ( role, i ) => {
+
+		if ( ! ROLES.includes( role as ProbeRole ) ) throw new CliError( `probe layout ${file}: probe ${i} has the unknown role ${JSON.stringify( role )}; expected one of ${ROLES.join( ', ' )}.` );
+
+	} );
+
+	const zones = layout.zones ?? [];
+	if ( ! Array.isArray( zones ) ) throw new CliError( `probe layout ${file}: "zones" must be an array of { name, probes, bounds? }.` );
+
+	const name = typeof layout.name === 'string' ? layout.name : '';
+	return { name, positions: Float64Array.from( raw as number[] ), names: names as string[], roles: roles as ProbeRole[], zones };
+
+}
+
+function optionalList( file: string, layout: Record<string, unknown>, key: string, count: number, fallback: ( i: number ) => string ): unknown[] {
+
+	const value = layout[ key ];
+	if ( value === undefined ) return Array.from( { length: count }, ( _, i ) => fallback( i ) );
+	if ( ! Array.isArray( value ) ) throw new CliError( `probe layout ${file}: "${key}" must be an array.` );
+	if ( value.length !== count ) throw new CliError( `probe layout ${file}: "${key}" has ${value.length} entries for ${count} probes.` );
+	return value;
+
+}
+
+/**
+ * Tetrahedralizes a validated layout; duplicate probes and layouts that span no volume are errors.
+ * @param file The layout's path, for the messages.
+ * @throws {CliError} exit code 2: two probes at the same place (naming both), all probes in one
+ * plane or on one line.
+ */
+export function tetrahedralizeLayout( file: string, layout: CliLayout ): Tetrahedralization {
+
+	let result: Tetrahedralization;
+	try {
+
+		result = tetrahedralize( layout.positions );
+
+	} catch ( error ) {
+
+		if ( error instanceof DegenerateInputError ) {
+
+			const what = error.reason === 'coplanar' ? 'all lie in one plane' : error.reason === 'collinear' ? 'all lie on one line' : error.reason === 'coincident' ? 'all coincide' : 'are too few distinct points';
+			throw new CliError( `probe layout ${file}: the ${layout.positions.length / 3} probes ${what}, so they span no volume (${error.message}). Add probes off that ${error.reason === 'coplanar' ? 'plane' : 'line'}.` );
+
+		}
+
+		throw error;
+
+	}
+
+	if ( result.duplicates.length > 0 ) {
+
+		const a = result.duplicates[ 0 ], b = result.duplicates[ 1 ];
+		const p = layout.positions;
+		const label = ( i: number ) => layout.names[ i ] ? `probe ${i} ("${layout.names[ i ]}")` : `probe ${i}`;
+		throw new CliError( `probe layout ${file}: ${label( a )} and ${label( b )} are at the same position (${p[ 3 * b ]}, ${p[ 3 * b + 1 ]}, ${p[ 3 * b + 2 ]})${result.duplicates.length > 2 ? ` (and ${result.duplicates.length / 2 - 1} more duplicates)` : ''}; remove one.` );
+
+	}
+
+	return result;
+
+}
+
+/**
+ * Runs the volume codec's own checks on everything but the SH (zeros here) before the capture, so a
+ * layout the codec would reject (a bad zone, a name it cannot store) fails in milliseconds, not
+ * after the bake.
+ * @throws {CliError} exit code 2 with the codec's message.
+ */
+export function checkVolumeInput( file: string, layout: CliLayout, tetrahedralization: Tetrahedralization ): void {
+
+	try {
+
+		validateBakedVolume( {
+			positions: layout.positions, sh: new Float32Array( 27 * layout.positions.length / 3 ),
+			tetrahedra: tetrahedralization.tetrahedra, neighbors: tetrahedralization.neighbors,
+			names: layout.names, roles: layout.roles, zones: layout.zones,
+		}, 'capture-lighting' );
+
+	} catch ( error ) {
+
+		throw new CliError( `probe layout ${file}: ${( error as Error ).message.replace( /^capture-lighting: /, '' )}` );
+
+	}
+
+}
