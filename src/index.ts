@@ -39,6 +39,8 @@ export { SHProjector } from './capture/SHProjector.js';
 export { ProbeCapturer } from './capture/ProbeCapturer.js';
 export type { ProbeCaptureSettings, ProbeCaptureOptions } from './capture/ProbeCapturer.js';
 export { projectEquirectToSHGPU } from './capture/projectEquirectToSHGPU.js';
+export { captureBounces } from './capture/captureBounces.js';
+export type { CaptureBouncesOptions, CaptureBouncesResult, BouncePass } from './capture/captureBounces.js';
 export { LightProbeVolume } from './runtime/LightProbeVolume.js';
 export type { LightProbeVolumeParameters, LightProbeVolumeCaptureOptions, AddOptions, ProbeRole, ProbeOccluders, SampleOptions } from './runtime/LightProbeVolume.js';
 export { VisibilityGuard } from './runtime/VisibilityGuard.js';
@@ -53,3 +55,8 @@ export { gatherWorldGeometry } from './placement/gatherWorldGeometry.js';
 export type { WorldGeometry } from './placement/gatherWorldGeometry.js';
 export { findProbeLocators } from './placement/findProbeLocators.js';
 export type { ProbeLocators } from './placement/findProbeLocators.js';
+
+// Baked volumes: the file format (pure codec) and its glTF extension.
+export * from './io/index.js';
+export { GLTFLightProbeVolumeExporterPlugin, GLTFLightProbeVolumeLoaderPlugin, GLTF_LIGHT_PROBE_VOLUME_EXTENSION } from './io/GLTFLightProbeVolumeExtension.js';
+export type { GLTFLightProbeVolumeEntry } from './io/GLTFLightProbeVolumeExtension.js';

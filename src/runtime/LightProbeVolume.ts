@@ -1,6 +1,7 @@
-import { Box3, Matrix4, Vector3 as Vector3Class, type Material, type Layers, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
+import { Box3, FloatType, Matrix4, Vector3 as Vector3Class, type Material, type Layers, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
-import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import { bakedVolumeFromJSON, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume, type BakedCapture, type BakedCaptureSettings, type BakedVolumeData, type BakedVolumeInput, type BakedVolumeJSON, type EncodeBakedVolumeOptions } from '../io/BakedVolume.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { blendSH } from '../interpolation/blendSH.js';
@@ -201,6 +202,15 @@ export class LightProbeVolume {
 	/** The tetrahedralization (or planar triangulation, or grid) that turns positions into weights. */
 	readonly interpolator: ProbeInterpolator;
 
+	/**
+	 * Capture settings of the last {@link LightProbeVolume.capture} (or those read from a baked
+	 * file): stored by {@link LightProbeVolume.toArrayBuffer} so a bake says how it was made.
+	 */
+	captureSettings: BakedCapture = {};
+
+	/** Free-form text stored with baked files (e.g. the tool and scene of the bake). */
+	metadata = '';
+
 	/** The lighting zones, or null when none were given. */
 	readonly zones: ProbeZones | null;
 
@@ -382,7 +392,78 @@ export class LightProbeVolume {
 
 		}
 
+		const roles: Partial<Record<ProbeRole, BakedCaptureSettings>> = {};
+		for ( const role of ROLES ) if ( options.roles?.[ role ] ) roles[ role ] = bakedSettings( { ...options, ...options.roles[ role ] } );
+		this.captureSettings = { ...bakedSettings( options ), ...( Object.keys( roles ).length > 0 ? { roles } : {} ) };
 		return this;
+
+	}
+
+	/**
+	 * Everything a baked file holds: positions, SH, the tetrahedralization (when the interpolator
+	 * is a {@link TetrahedralMesh}, so loading needs no re-tetrahedralization), names, roles, zones,
+	 * bounds, capture settings and metadata. The arrays are the volume's own, not copies.
+	 */
+	toBakedData(): BakedVolumeInput {
+
+		const mesh = this.interpolator instanceof TetrahedralMesh ? this.interpolator : null;
+		return {
+			positions: this.positions, sh: this.sh, names: this.names, roles: this.roles,
+			tetrahedra: mesh?.tetrahedra, neighbors: mesh?.neighbors,
+			zones: this.zones?.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: zone.bounds } ) ),
+			capture: this.captureSettings, metadata: this.metadata,
+		};
+
+	}
+
+	/**
+	 * The volume as a baked binary file (little-endian, versioned; layout in docs/format.md).
+	 * @param options `precision`: SH as `'float32'` (default, exact) or `'float16'` (smaller).
+	 */
+	toArrayBuffer( options?: EncodeBakedVolumeOptions ): ArrayBuffer {
+
+		return encodeBakedVolume( this.toBakedData(), options );
+
+	}
+
+	/** The volume in the JSON form of the baked format (mirrors the binary; `JSON.stringify` it). */
+	toJSON(): BakedVolumeJSON {
+
+		return bakedVolumeToJSON( this.toBakedData() );
+
+	}
+
+	/**
+	 * A volume from decoded baked data: the stored tetrahedralization is used as it is (checked in
+	 * O(n)); without one, the default interpolator is built.
+	 * @param parameters More constructor parameters, e.g. `occluders`.
+	 */
+	static fromBakedData( data: BakedVolumeData, parameters: Omit<LightProbeVolumeParameters, 'positions' | 'sh' | 'names' | 'roles' | 'zones' | 'interpolator'> = {} ): LightProbeVolume {
+
+		const interpolator = data.tetrahedra.length > 0 ? TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors ) : undefined;
+		const zones = data.zones.length > 0 ? data.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: boxes( zone.bounds ) } ) ) : undefined;
+		const volume = new LightProbeVolume( { ...parameters, positions: data.positions, sh: data.sh, names: data.names, roles: data.roles, zones, interpolator } );
+		volume.captureSettings = data.capture;
+		volume.metadata = data.metadata;
+		return volume;
+
+	}
+
+	/**
+	 * Loads a baked binary file written by {@link LightProbeVolume.toArrayBuffer} (or another
+	 * writer of docs/format.md). A truncated, corrupted, newer-version or hostile file throws a
+	 * `BakedVolumeError` naming the problem.
+	 */
+	static fromArrayBuffer( buffer: ArrayBuffer | ArrayBufferView, parameters?: Parameters<typeof LightProbeVolume.fromBakedData>[ 1 ] ): LightProbeVolume {
+
+		return LightProbeVolume.fromBakedData( decodeBakedVolume( buffer ), parameters );
+
+	}
+
+	/** Loads the JSON form (an object or its text), with the same checks as {@link LightProbeVolume.fromArrayBuffer}. */
+	static fromJSON( json: unknown, parameters?: Parameters<typeof LightProbeVolume.fromBakedData>[ 1 ] ): LightProbeVolume {
+
+		return LightProbeVolume.fromBakedData( bakedVolumeFromJSON( typeof json === 'string' ? JSON.parse( json ) : json ), parameters );
 
 	}
 
@@ -680,5 +761,25 @@ function listOf<T>( name: string, values: readonly T[] | undefined, count: numbe
 	assertArrayLike( 'LightProbeVolume', name, values as unknown );
 	if ( values.length !== count ) throw new RangeError( `LightProbeVolume: ${name} must have one entry per probe (${count}), got ${values.length}.` );
 	return Array.from( values );
+
+}
+
+/** The capture settings worth storing with a bake. */
+function bakedSettings( settings: ProbeCaptureSettings ): BakedCaptureSettings {
+
+	const out: BakedCaptureSettings = { resolution: settings.resolution ?? 32, near: settings.near ?? 0.05, far: settings.far ?? 1000, type: settings.type === FloatType ? 'float' : 'half' };
+	// The format names the two normalised formulas only; 'paper-unnormalized' is left unstated.
+	if ( settings.solidAngle === undefined || settings.solidAngle === 'exact' || settings.solidAngle === 'paper' ) out.solidAngle = settings.solidAngle ?? 'exact';
+	return out;
+
+}
+
+/** Flat min/max boxes (6 numbers each) as `BoxLike`s. */
+function boxes( flat: Float64Array ): { min: { x: number; y: number; z: number }; max: { x: number; y: number; z: number } }[] | undefined {
+
+	if ( flat.length === 0 ) return undefined;
+	const out = [];
+	for ( let i = 0; i < flat.length; i += 6 ) out.push( { min: { x: flat[ i ], y: flat[ i + 1 ], z: flat[ i + 2 ] }, max: { x: flat[ i + 3 ], y: flat[ i + 4 ], z: flat[ i + 5 ] } } );
+	return out;
 
 }

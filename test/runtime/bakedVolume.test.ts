@@ -1,0 +1,132 @@
+import { describe, expect, it } from 'vitest';
+import {
+	BakedVolumeError, GridInterpolator, LightProbeVolume, PlanarMesh, TetrahedralMesh, decodeBakedVolume, tetrahedralize,
+} from '../../src/index.js';
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
+
+/*
+ * LightProbeVolume ↔ baked files (the codec itself is tested in test/io): what a game loads must
+ * light objects exactly as the volume that was baked, without re-tetrahedralizing.
+ */
+
+function randomVolume( count: number, seed: number ): LightProbeVolume {
+
+	const random = mulberry32( seed );
+	const positions = Array.from( { length: 3 * count }, () => 10 * random() );
+	const sh = Array.from( { length: 27 * count }, () => random() - 0.3 );
+	const names = Array.from( { length: count }, ( _, i ) => `probe ${i}` );
+	const roles = Array.from( { length: count }, ( _, i ) => ( [ 'sky', 'bounce', 'bleed', 'fill' ] as const )[ i % 4 ] );
+	const zones = [
+		{ name: 'west', probes: Array.from( { length: count }, ( _, i ) => i ).filter( ( i ) => positions[ 3 * i ] < 6 ), bounds: { min: { x: 0, y: 0, z: 0 }, max: { x: 5, y: 10, z: 10 } } },
+		{ name: 'all', probes: Array.from( { length: count }, ( _, i ) => i ) },
+	];
+	const volume = new LightProbeVolume( { positions, sh, names, roles, zones } );
+	volume.captureSettings = { resolution: 64, near: 0.1, far: 500, type: 'half', solidAngle: 'exact', roles: { sky: { far: 5000 } } };
+	volume.metadata = 'test bake';
+	return volume;
+
+}
+
+function samplesEqual( a: LightProbeVolume, b: LightProbeVolume, tolerance: number ): void {
+
+	const random = mulberry32( 99 );
+	const sa = new Float32Array( 27 ), sb = new Float32Array( 27 );
+	for ( let k = 0; k < 300; k ++ ) {
+
+		// Inside and outside the probes' hull (outer cells), with and without zones.
+		const p = [ 14 * random() - 2, 14 * random() - 2, 14 * random() - 2 ];
+		const zone = k % 3 === 0 ? { zone: 'west' } : undefined;
+		a.sample( p, sa, zone );
+		b.sample( p, sb, zone );
+		for ( let j = 0; j < 27; j ++ ) expect( Math.abs( sa[ j ] - sb[ j ] ), `sample ${k} coefficient ${j}` ).toBeLessThanOrEqual( tolerance * ( 1 + Math.abs( sa[ j ] ) ) );
+
+	}
+
+}
+
+describe( 'LightProbeVolume baked files', () => {
+
+	it( 'binary, float32: everything comes back, and objects are lit exactly as before', () => {
+
+		const volume = randomVolume( 60, 1 );
+		const loaded = LightProbeVolume.fromArrayBuffer( volume.toArrayBuffer() );
+		expect( Array.from( loaded.positions ) ).toEqual( Array.from( volume.positions ) );
+		expect( Array.from( loaded.sh ) ).toEqual( Array.from( volume.sh ) );
+		expect( loaded.names ).toEqual( volume.names );
+		expect( loaded.roles ).toEqual( volume.roles );
+		expect( loaded.zones!.zones.map( ( z ) => [ z.name, Array.from( z.probes ), Array.from( z.bounds ) ] ) ).toEqual( volume.zones!.zones.map( ( z ) => [ z.name, Array.from( z.probes ), Array.from( z.bounds ) ] ) );
+		expect( loaded.captureSettings ).toEqual( volume.captureSettings );
+		expect( loaded.metadata ).toBe( 'test bake' );
+		expect( loaded.interpolator ).toBeInstanceOf( TetrahedralMesh );
+		expect( Array.from( ( loaded.interpolator as TetrahedralMesh ).tetrahedra ) ).toEqual( Array.from( ( volume.interpolator as TetrahedralMesh ).tetrahedra ) );
+		samplesEqual( volume, loaded, 0 );
+
+	} );
+
+	it( 'binary, float16: smaller, and the light within half precision', () => {
+
+		const volume = randomVolume( 60, 2 );
+		const f32 = volume.toArrayBuffer(), f16 = volume.toArrayBuffer( { precision: 'float16' } );
+		expect( f32.byteLength - f16.byteLength ).toBe( 60 * 27 * 2 );
+		samplesEqual( volume, LightProbeVolume.fromArrayBuffer( f16 ), 2 ** - 10 );
+
+	} );
+
+	it( 'JSON (object or text): the same volume', () => {
+
+		const volume = randomVolume( 30, 3 );
+		samplesEqual( volume, LightProbeVolume.fromJSON( volume.toJSON() ), 0 );
+		samplesEqual( volume, LightProbeVolume.fromJSON( JSON.stringify( volume ) ), 0 );
+
+	} );
+
+	it( 'uses the stored tetrahedralization as it is: a reordered one comes back reordered, not rebuilt', () => {
+
+		const volume = randomVolume( 40, 4 );
+		const data = decodeBakedVolume( volume.toArrayBuffer() );
+		// Reverse the tetrahedra and remap the neighbour links: the same mesh, in an order
+		// tetrahedralize() would not produce.
+		const n = data.tetrahedra.length / 4;
+		const tetrahedra = new Uint32Array( data.tetrahedra.length ), neighbors = new Int32Array( data.neighbors.length );
+		for ( let t = 0; t < n; t ++ ) {
+
+			for ( let i = 0; i < 4; i ++ ) {
+
+				tetrahedra[ 4 * ( n - 1 - t ) + i ] = data.tetrahedra[ 4 * t + i ];
+				const neighbor = data.neighbors[ 4 * t + i ];
+				neighbors[ 4 * ( n - 1 - t ) + i ] = neighbor < 0 ? - 1 : n - 1 - neighbor;
+
+			}
+
+		}
+
+		const loaded = LightProbeVolume.fromBakedData( { ...data, tetrahedra, neighbors } );
+		expect( Array.from( ( loaded.interpolator as TetrahedralMesh ).tetrahedra ) ).toEqual( Array.from( tetrahedra ) );
+		expect( Array.from( tetrahedralize( data.positions ).tetrahedra ) ).not.toEqual( Array.from( tetrahedra ) );
+		samplesEqual( volume, loaded, 0 );
+
+	} );
+
+	it( 'a trilinear or planar volume is stored without tetrahedra and loads with the default interpolator', () => {
+
+		const grid = new GridInterpolator( [ 0, 0, 0 ], [ 1, 1, 1 ], [ 3, 3, 3 ] );
+		const gridVolume = new LightProbeVolume( { positions: grid.positions, interpolator: grid } );
+		expect( decodeBakedVolume( gridVolume.toArrayBuffer() ).tetrahedra.length ).toBe( 0 );
+		expect( LightProbeVolume.fromArrayBuffer( gridVolume.toArrayBuffer() ).interpolator ).toBeInstanceOf( TetrahedralMesh );
+		const flat = new LightProbeVolume( { positions: [ 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1, 0.5, 0, 2 ] } );
+		expect( LightProbeVolume.fromArrayBuffer( flat.toArrayBuffer() ).interpolator ).toBeInstanceOf( PlanarMesh );
+
+	} );
+
+	it( 'a damaged file gives a BakedVolumeError naming the problem, never a volume', () => {
+
+		const buffer = randomVolume( 20, 5 ).toArrayBuffer();
+		expect( () => LightProbeVolume.fromArrayBuffer( buffer.slice( 0, buffer.byteLength - 9 ) ) ).toThrow( BakedVolumeError );
+		const flipped = new Uint8Array( buffer.slice( 0 ) );
+		flipped[ 200 ] ^= 0x10;
+		expect( () => LightProbeVolume.fromArrayBuffer( flipped ) ).toThrow( /corrupt/i );
+		expect( () => LightProbeVolume.fromJSON( '{"format": "something else"}' ) ).toThrow( BakedVolumeError );
+
+	} );
+
+} );
