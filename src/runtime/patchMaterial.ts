@@ -1,5 +1,5 @@
-import type { Material, WebGLProgramParametersWithUniforms, WebGLRenderer } from 'three';
-import { probeVolumePars } from '../shaders.generated.js';
+import { Vector3, type Data3DTexture, type Material, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
+import { probeVolumePars, probeVolumeTexturePars, probeVolumeVertexSHPars } from '../shaders.generated.js';
 
 /** The uniforms a patched material reads; write them yourself, or let a `LightProbeVolume` do it. */
 export interface ProbeVolumeUniforms {
@@ -16,13 +16,39 @@ export interface ProbeVolumeUniforms {
 	 */
 	probeVolumeDirectScale: { value: number };
 
+	/** Mode `'texture'`: the SH atlas of a {@link ProbeVolumeTexture} (three's LightProbeGrid layout). */
+	probeVolumeSH?: { value: Data3DTexture | null };
+
+	/** Mode `'texture'`: world position of the texture's first grid node. */
+	probeVolumeGridMin?: { value: Vector3 };
+
+	/** Mode `'texture'`: world position of the texture's last grid node. */
+	probeVolumeGridMax?: { value: Vector3 };
+
+	/** Mode `'texture'`: grid nodes per axis (each ≥ 2). */
+	probeVolumeGridResolution?: { value: Vector3 };
+
 }
+
+/**
+ * Where a patched material's probe light comes from:
+ * - `'uniform'`: one SH per object, as 3 irradiance matrices (`LightProbeVolume`'s object mode).
+ * - `'vertexIrradiance'`: a `probeIrradiance` vec3 attribute per vertex (`ProbeVertexLighting`).
+ * - `'vertexSH'`: 7 vec4 attributes `probeSH0`…`probeSH6` per vertex, evaluated per pixel.
+ * - `'texture'`: a 3D SH texture over the object's bounds, sampled per pixel (`ProbeTextureLighting`).
+ */
+export type ProbeVolumeSource = 'uniform' | 'vertexIrradiance' | 'vertexSH' | 'texture';
+
+const SOURCES: readonly ProbeVolumeSource[] = [ 'uniform', 'vertexIrradiance', 'vertexSH', 'texture' ];
 
 /** Options of {@link patchMaterial}. */
 export interface PatchMaterialOptions {
 
-	/** Evaluate irradiance per vertex instead of per pixel (cheaper; the paper offers both). Default false. */
+	/** Evaluate irradiance per vertex instead of per pixel (cheaper; the paper offers both). Default false. Source `'uniform'` only. */
 	perVertex?: boolean;
+
+	/** Where the probe light comes from. Default `'uniform'`. */
+	source?: ProbeVolumeSource;
 
 	/** Initial `probeVolumeIntensity`. Default 1. */
 	intensity?: number;
@@ -36,7 +62,7 @@ const PATCHED = Symbol( 'three-capture-lighting.patched' );
 
 interface PatchedMaterial extends Material {
 
-	[ PATCHED ]?: { uniforms: ProbeVolumeUniforms; onBeforeCompile: Material[ 'onBeforeCompile' ]; customProgramCacheKey: Material[ 'customProgramCacheKey' ]; perVertex: boolean };
+	[ PATCHED ]?: { uniforms: ProbeVolumeUniforms; onBeforeCompile: Material[ 'onBeforeCompile' ]; customProgramCacheKey: Material[ 'customProgramCacheKey' ]; variant: string };
 
 }
 
@@ -45,7 +71,8 @@ interface PatchedMaterial extends Material {
  * E(n) = nᵀMn, with one 4x4 M per colour channel in uniforms, is added to three's indirect
  * diffuse irradiance (where a `LightProbe`'s term goes). All patched materials with the same
  * options share one shader program; only uniforms differ per object. A user `onBeforeCompile`
- * set before patching still runs.
+ * set before patching still runs. `options.source` swaps the per-object matrices for per-vertex
+ * attributes or a 3D SH texture (large objects: see `ProbeVertexLighting`, `ProbeTextureLighting`).
  *
  * @returns The uniforms: fill `probeVolumeMatrices.value` with `irradianceMatrices( sh )`.
  */
@@ -61,12 +88,30 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 	const existing = target[ PATCHED ];
 	if ( existing ) return existing.uniforms;
 
+	const source = options.source ?? 'uniform';
+	if ( ! SOURCES.includes( source ) ) throw new RangeError( `patchMaterial: options.source is "${String( source )}"; expected one of ${SOURCES.join( ', ' )}.` );
 	const perVertex = options.perVertex === true;
+	if ( perVertex && source !== 'uniform' ) throw new RangeError( `patchMaterial: options.perVertex applies to source 'uniform' only, got source '${source}'.` );
+	const variant = source === 'uniform' ? ( perVertex ? 'vertex' : 'pixel' ) : source;
 	const uniforms: ProbeVolumeUniforms = options.uniforms ?? {
 		probeVolumeMatrices: { value: new Float32Array( 48 ) },
 		probeVolumeIntensity: { value: options.intensity ?? 1 },
 		probeVolumeDirectScale: { value: 1 },
 	};
+	if ( source === 'texture' && options.uniforms === undefined ) {
+
+		uniforms.probeVolumeSH = { value: null };
+		uniforms.probeVolumeGridMin = { value: new Vector3() };
+		uniforms.probeVolumeGridMax = { value: new Vector3( 1, 1, 1 ) };
+		uniforms.probeVolumeGridResolution = { value: new Vector3( 2, 2, 2 ) };
+
+	}
+
+	if ( source === 'texture' && ( ! uniforms.probeVolumeSH || ! uniforms.probeVolumeGridMin || ! uniforms.probeVolumeGridMax || ! uniforms.probeVolumeGridResolution ) ) {
+
+		throw new TypeError( 'patchMaterial: source \'texture\' needs options.uniforms with probeVolumeSH, probeVolumeGridMin, probeVolumeGridMax and probeVolumeGridResolution.' );
+
+	}
 	const previous = { onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey };
 	// three's default key is onBeforeCompile.toString(): evaluate it with the user's hook in place,
 	// or every patched material would share the wrapper's text and one program.
@@ -92,12 +137,21 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 		shader.uniforms.probeVolumeMatrices = uniforms.probeVolumeMatrices;
 		shader.uniforms.probeVolumeIntensity = uniforms.probeVolumeIntensity;
 		shader.uniforms.probeVolumeDirectScale = uniforms.probeVolumeDirectScale;
-		injectProbeVolume( shader, perVertex );
+		if ( source === 'texture' ) {
+
+			shader.uniforms.probeVolumeSH = uniforms.probeVolumeSH!;
+			shader.uniforms.probeVolumeGridMin = uniforms.probeVolumeGridMin!;
+			shader.uniforms.probeVolumeGridMax = uniforms.probeVolumeGridMax!;
+			shader.uniforms.probeVolumeGridResolution = uniforms.probeVolumeGridResolution!;
+
+		}
+
+		injectProbeVolume( shader, variant );
 
 	};
 
-	target.customProgramCacheKey = () => `${previousKey()}|three-capture-lighting:1:${perVertex ? 'vertex' : 'pixel'}`;
-	target[ PATCHED ] = { uniforms, perVertex, ...previous };
+	target.customProgramCacheKey = () => `${previousKey()}|three-capture-lighting:1:${variant}`;
+	target[ PATCHED ] = { uniforms, variant, ...previous };
 	// Release the compiled program: three keeps uniforms per material and program key, so a
 	// material patched again (new uniforms, same key) must be compiled afresh to pick them up.
 	target.dispose();
@@ -151,7 +205,42 @@ const VERTEX_VERTEX = /* glsl */`
 vProbeVolumeIrradiance = probeVolumeIrradiance( normalize( ( vec4( transformedNormal, 0.0 ) * viewMatrix ).xyz ) );
 `;
 
-function injectProbeVolume( shader: WebGLProgramParametersWithUniforms, perVertex: boolean ): void {
+const VERTEX_IRRADIANCE_ATTRIBUTE = /* glsl */`
+#include <defaultnormal_vertex>
+vProbeVolumeIrradiance = probeVolumeIntensity * probeIrradiance;
+`;
+
+const VERTEX_SH_ATTRIBUTES = /* glsl */`
+#include <defaultnormal_vertex>
+vProbeSH0 = probeSH0; vProbeSH1 = probeSH1; vProbeSH2 = probeSH2; vProbeSH3 = probeSH3;
+vProbeSH4 = probeSH4; vProbeSH5 = probeSH5; vProbeSH6 = probeSH6;
+`;
+
+const FRAGMENT_VERTEX_SH = /* glsl */`
+#include <lights_fragment_begin>
+reflectedLight.directDiffuse *= probeVolumeDirectScale;
+reflectedLight.directSpecular *= probeVolumeDirectScale;
+#if defined( RE_IndirectDiffuse )
+	irradiance += probeVolumeVertexSHIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
+#endif
+`;
+
+// The world position from the view-space one, as three's own light-probe-grid path does: no
+// extra varying.
+const FRAGMENT_TEXTURE = /* glsl */`
+#include <lights_fragment_begin>
+reflectedLight.directDiffuse *= probeVolumeDirectScale;
+reflectedLight.directSpecular *= probeVolumeDirectScale;
+#if defined( RE_IndirectDiffuse )
+	irradiance += probeVolumeTextureIrradiance(
+		( ( vec4( geometryPosition, 1.0 ) - viewMatrix[ 3 ] ) * viewMatrix ).xyz,
+		normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
+#endif
+`;
+
+const SH_ATTRIBUTE_DECLARATIONS = [ 0, 1, 2, 3, 4, 5, 6 ].map( ( i ) => `attribute vec4 probeSH${i};\nvarying vec4 vProbeSH${i};` ).join( '\n' );
+
+function injectProbeVolume( shader: WebGLProgramParametersWithUniforms, variant: string ): void {
 
 	const requireChunk = ( source: string, chunk: string, stage: string ) => {
 
@@ -160,21 +249,47 @@ function injectProbeVolume( shader: WebGLProgramParametersWithUniforms, perVerte
 	};
 
 	requireChunk( shader.fragmentShader, '#include <lights_fragment_begin>', 'fragment' );
-	if ( perVertex ) {
+	if ( variant !== 'pixel' && variant !== 'texture' ) requireChunk( shader.vertexShader, '#include <defaultnormal_vertex>', 'vertex' );
+	const vertexVarying = 'uniform float probeVolumeDirectScale;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {';
+	switch ( variant ) {
 
-		requireChunk( shader.vertexShader, '#include <defaultnormal_vertex>', 'vertex' );
-		shader.vertexShader = shader.vertexShader
-			.replace( 'void main() {', `${probeVolumePars}\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {` )
-			.replace( '#include <defaultnormal_vertex>', VERTEX_VERTEX );
-		shader.fragmentShader = shader.fragmentShader
-			.replace( 'void main() {', 'uniform float probeVolumeDirectScale;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {' )
-			.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
+		case 'vertex':
+			shader.vertexShader = shader.vertexShader
+				.replace( 'void main() {', `${probeVolumePars}\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {` )
+				.replace( '#include <defaultnormal_vertex>', VERTEX_VERTEX );
+			shader.fragmentShader = shader.fragmentShader
+				.replace( 'void main() {', vertexVarying )
+				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
+			break;
 
-	} else {
+		case 'vertexIrradiance':
+			shader.vertexShader = shader.vertexShader
+				.replace( 'void main() {', 'uniform float probeVolumeIntensity;\nattribute vec3 probeIrradiance;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {' )
+				.replace( '#include <defaultnormal_vertex>', VERTEX_IRRADIANCE_ATTRIBUTE );
+			shader.fragmentShader = shader.fragmentShader
+				.replace( 'void main() {', vertexVarying )
+				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
+			break;
 
-		shader.fragmentShader = shader.fragmentShader
-			.replace( 'void main() {', `${probeVolumePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
-			.replace( '#include <lights_fragment_begin>', FRAGMENT_PIXEL );
+		case 'vertexSH':
+			shader.vertexShader = shader.vertexShader
+				.replace( 'void main() {', `${SH_ATTRIBUTE_DECLARATIONS}\nvoid main() {` )
+				.replace( '#include <defaultnormal_vertex>', VERTEX_SH_ATTRIBUTES );
+			shader.fragmentShader = shader.fragmentShader
+				.replace( 'void main() {', `${probeVolumeVertexSHPars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
+				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX_SH );
+			break;
+
+		case 'texture':
+			shader.fragmentShader = shader.fragmentShader
+				.replace( 'void main() {', `${probeVolumeTexturePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
+				.replace( '#include <lights_fragment_begin>', FRAGMENT_TEXTURE );
+			break;
+
+		default:
+			shader.fragmentShader = shader.fragmentShader
+				.replace( 'void main() {', `${probeVolumePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
+				.replace( '#include <lights_fragment_begin>', FRAGMENT_PIXEL );
 
 	}
 

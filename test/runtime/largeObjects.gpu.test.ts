@@ -1,0 +1,254 @@
+/**
+ * Large objects on a real GL context (headless-gl, WebGL2): a 20 × 20 floor under a probe field
+ * whose SH is a linear function of x and z, seen from straight above by an orthographic camera.
+ *
+ * Truth, independent of the code under test: at a point p of the floor, the pixel must be what
+ * three.js renders for the same floor lit by a plain `LightProbe` holding the analytic SH(p). The
+ * object mode (one SH per object) gives one colour everywhere; the vertex and texture modes must
+ * follow the gradient — a linear field is reproduced exactly by per-vertex sampling (linear across
+ * triangles at a constant normal) and by trilinear filtering of grid nodes.
+ *
+ * Needs an X display for headless-gl: `xvfb-run -a npx vitest run test/runtime/largeObjects.gpu.test.ts`.
+ */
+
+import * as path from 'node:path';
+import { afterAll, describe, expect, it } from 'vitest';
+import * as THREE from 'three';
+import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
+import { ProbeVertexLighting } from '../../src/runtime/ProbeVertexLighting.js';
+import { ProbeTextureLighting } from '../../src/runtime/ProbeTextureLighting.js';
+import { ProbeVolumeTexture } from '../../src/runtime/ProbeVolumeTexture.js';
+import { toLightProbeGrid } from '../../src/runtime/toLightProbeGrid.js';
+import { createHeadlessRenderer } from '../helpers/headlessGL.js';
+import { OUTPUT_DIR, compareImages, projectToImage, renderToImage, writePNG, type Image8 } from '../helpers/gpuScenes.js';
+
+const SIZE = 64;
+const ctx = await createHeadlessRenderer( SIZE, SIZE );
+const SKIPPED = ctx.renderer ? '' : ` — SKIPPED: ${ctx.skipReason}`;
+
+/** SH(x, z): bright red towards +x, blue towards +z, green from above; a little L2 everywhere. */
+function fieldSH( x: number, z: number ): number[] {
+
+	const sh = new Array<number>( 27 ).fill( 0 );
+	sh[ 0 ] = 1.1 + 0.045 * x; sh[ 1 ] = 1.1; sh[ 2 ] = 1.1 + 0.045 * z; // L00
+	sh[ 3 ] = 0.25; sh[ 4 ] = 0.3 + 0.012 * x; sh[ 5 ] = 0.25; // L1−1 (y)
+	sh[ 18 ] = 0.08; sh[ 19 ] = - 0.05 + 0.004 * z; sh[ 20 ] = 0.06; // L20
+	sh[ 24 ] = 0.05; sh[ 25 ] = 0.02; sh[ 26 ] = - 0.04; // L22
+	return sh;
+
+}
+
+/** Probes on two levels around the floor, corners plus irregular interior points. */
+function fieldVolume(): LightProbeVolume {
+
+	const positions: number[] = [];
+	for ( const x of [ - 12, 12 ] ) for ( const y of [ - 2, 4 ] ) for ( const z of [ - 12, 12 ] ) positions.push( x, y, z );
+	for ( let i = 0; i < 20; i ++ ) positions.push( 9 * Math.sin( 3.1 * i + 1 ), 1 + 2 * Math.sin( 5.3 * i ), 9 * Math.cos( 2.3 * i + 0.5 ) );
+	const sh: number[] = [];
+	for ( let i = 0; i < positions.length / 3; i ++ ) sh.push( ...fieldSH( positions[ 3 * i ], positions[ 3 * i + 2 ] ) );
+	return new LightProbeVolume( { positions, sh } );
+
+}
+
+/** The floor, [−10, 10]² at y = 0, facing up; two triangles unless `segments` says otherwise. */
+function floorMesh( segments = 1 ): THREE.Mesh {
+
+	const geometry = new THREE.PlaneGeometry( 20, 20, segments, segments ).rotateX( - Math.PI / 2 );
+	return new THREE.Mesh( geometry, new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
+
+}
+
+function topCamera(): THREE.OrthographicCamera {
+
+	const camera = new THREE.OrthographicCamera( - 10, 10, 10, - 10, 0.1, 50 );
+	camera.position.set( 0, 20, 0 );
+	camera.up.set( 0, 0, - 1 );
+	camera.lookAt( 0, 0, 0 );
+	camera.updateMatrixWorld();
+	return camera;
+
+}
+
+/** Sample points across the floor, inside its pixels (not on an edge). */
+const POINTS = [ [ - 8, - 8 ], [ 8, - 8 ], [ - 8, 8 ], [ 8, 8 ], [ 0, 0 ], [ - 4.3, 6.1 ], [ 5.7, - 2.2 ] ];
+
+function pixel( image: Image8, camera: THREE.Camera, x: number, z: number ): number[] {
+
+	const [ u, v ] = projectToImage( new THREE.Vector3( x, 0, z ), camera, image.width, image.height );
+	const p = Math.floor( v ) * image.width + Math.floor( u );
+	return [ image.data[ 4 * p ], image.data[ 4 * p + 1 ], image.data[ 4 * p + 2 ] ];
+
+}
+
+describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless-gl)${SKIPPED}`, () => {
+
+	const renderer = ctx.renderer as THREE.WebGLRenderer;
+	const gl = ctx.gl as WebGL2RenderingContext;
+	const camera = topCamera();
+
+	afterAll( () => ctx.dispose() );
+
+	/** What three renders at (x, z) for the floor lit by a LightProbe holding SH(x, z). */
+	const reference = new Map<string, number[]>();
+	function expected( x: number, z: number ): number[] {
+
+		const key = `${x},${z}`;
+		if ( ! reference.has( key ) ) {
+
+			const scene = new THREE.Scene();
+			const floor = floorMesh();
+			scene.add( floor, new THREE.LightProbe( new THREE.SphericalHarmonics3().fromArray( fieldSH( x, z ) ) ) );
+			reference.set( key, pixel( renderToImage( renderer, gl, scene, camera ), camera, x, z ) );
+			floor.geometry.dispose();
+			( floor.material as THREE.Material ).dispose();
+
+		}
+
+		return reference.get( key )!;
+
+	}
+
+	function render( floor: THREE.Object3D, extra?: THREE.Object3D ): Image8 {
+
+		const scene = new THREE.Scene();
+		scene.add( floor );
+		if ( extra ) scene.add( extra );
+		return renderToImage( renderer, gl, scene, camera );
+
+	}
+
+	/** Largest channel difference between the image and the LightProbe references at POINTS. */
+	function worstAgainstReference( image: Image8 ): number {
+
+		let worst = 0;
+		for ( const [ x, z ] of POINTS ) {
+
+			const actual = pixel( image, camera, x, z ), want = expected( x, z );
+			for ( let c = 0; c < 3; c ++ ) worst = Math.max( worst, Math.abs( actual[ c ] - want[ c ] ) );
+
+		}
+
+		return worst;
+
+	}
+
+	it( 'the references themselves differ across the floor by > 30/255 in red and blue (the field is a real gradient)', () => {
+
+		expect( expected( 8, - 8 )[ 0 ] - expected( - 8, - 8 )[ 0 ] ).toBeGreaterThan( 30 );
+		expect( expected( - 8, 8 )[ 2 ] - expected( - 8, - 8 )[ 2 ] ).toBeGreaterThan( 30 );
+
+	} );
+
+	it( 'object mode (LightProbeVolume.add): one colour over the whole floor — the issue this feature fixes', () => {
+
+		const volume = fieldVolume();
+		const floor = floorMesh();
+		volume.add( floor );
+		const image = render( floor );
+		const colours = POINTS.map( ( [ x, z ] ) => pixel( image, camera, x, z ) );
+		for ( const colour of colours ) for ( let c = 0; c < 3; c ++ ) expect( Math.abs( colour[ c ] - colours[ 0 ][ c ] ) ).toBeLessThanOrEqual( 1 );
+		expect( worstAgainstReference( image ) ).toBeGreaterThan( 20 );
+		volume.dispose();
+
+	} );
+
+	for ( const output of [ 'irradiance', 'sh' ] as const ) {
+
+		it( `vertex mode, output '${output}', a two-triangle floor: every sample point within 2/255 of three's LightProbe with the SH there`, () => {
+
+			const volume = fieldVolume();
+			const floor = floorMesh();
+			const lighting = new ProbeVertexLighting( floor, volume, { output } );
+			const image = render( floor );
+			const worst = worstAgainstReference( image );
+			if ( worst > 2 ) writePNG( path.join( OUTPUT_DIR, `largeObjects.vertex-${output}.png` ), image );
+			expect( worst ).toBeLessThanOrEqual( 2 );
+			lighting.dispose();
+			floor.geometry.dispose();
+
+		} );
+
+	}
+
+	it( 'texture mode (half-float 3D texture, hardware trilinear): every sample point within 2/255 of the reference', () => {
+
+		const volume = fieldVolume();
+		const floor = floorMesh();
+		const lighting = new ProbeTextureLighting( floor, volume, { resolution: [ 8, 2, 8 ] } );
+		const image = render( floor );
+		const worst = worstAgainstReference( image );
+		if ( worst > 2 ) writePNG( path.join( OUTPUT_DIR, 'largeObjects.texture.png' ), image );
+		expect( worst ).toBeLessThanOrEqual( 2 );
+		// Moving the floor moves the texture with it: the light is the field's at the new place.
+		floor.position.x = 2;
+		lighting.update();
+		const moved = render( floor );
+		const want = expected( 5.7, - 2.2 ), got = pixel( moved, camera, 5.7, - 2.2 );
+		for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ) ).toBeLessThanOrEqual( 2 );
+		lighting.dispose();
+
+	} );
+
+	it( 'texture mode, float texels: rendered only where OES_texture_float_linear exists (else it samples black)', () => {
+
+		const linear = renderer.extensions.has( 'OES_texture_float_linear' );
+		const volume = fieldVolume();
+		const floor = floorMesh();
+		const lighting = new ProbeTextureLighting( floor, volume, { resolution: [ 8, 2, 8 ], type: 'float' } );
+		const image = render( floor );
+		if ( linear ) expect( worstAgainstReference( image ) ).toBeLessThanOrEqual( 2 );
+		else console.warn( 'largeObjects: this GL has no OES_texture_float_linear; float texels not rendered' );
+		lighting.dispose();
+
+	} );
+
+	it( 'three\'s own light-probe-grid path (toLightProbeGrid, unpatched material) renders the same floor as our texture path, within 2/255', () => {
+
+		const volume = fieldVolume();
+		const ours = floorMesh();
+		const lighting = new ProbeTextureLighting( ours, volume, { resolution: [ 8, 2, 8 ] } );
+		const oursImage = render( ours );
+
+		const plain = floorMesh();
+		const texture = new ProbeVolumeTexture( volume, new THREE.Box3().setFromObject( plain ), { resolution: [ 8, 2, 8 ] } );
+		const grid = toLightProbeGrid( texture );
+		const threeImage = render( plain, grid );
+		const result = compareImages( oursImage, threeImage, 2 );
+		if ( result.count > 0 ) {
+
+			writePNG( path.join( OUTPUT_DIR, 'largeObjects.grid.ours.png' ), oursImage );
+			writePNG( path.join( OUTPUT_DIR, 'largeObjects.grid.three.png' ), threeImage );
+
+		}
+
+		expect( result.count, `max ${result.max} at ${result.at}` ).toBe( 0 );
+		expect( worstAgainstReference( threeImage ) ).toBeLessThanOrEqual( 2 );
+		lighting.dispose();
+		texture.dispose();
+		grid.dispose();
+
+	} );
+
+	it( 'two objects in the same mode share one program (texture, vertex irradiance, vertex SH)', () => {
+
+		const volume = fieldVolume();
+		const setups: [ string, ( mesh: THREE.Mesh ) => { dispose(): void } ][] = [
+			[ 'texture', ( mesh ) => new ProbeTextureLighting( mesh, volume, { resolution: 4 } ) ],
+			[ 'vertex irradiance', ( mesh ) => new ProbeVertexLighting( mesh, volume ) ],
+			[ 'vertex sh', ( mesh ) => new ProbeVertexLighting( mesh, volume, { output: 'sh' } ) ],
+		];
+		for ( const [ name, make ] of setups ) {
+
+			const a = floorMesh(), b = floorMesh();
+			b.position.z = 30;
+			const la = make( a ), lb = make( b );
+			const before = renderer.info.programs!.length;
+			render( a ); render( b );
+			expect( renderer.info.programs!.length - before, name ).toBe( 1 );
+			la.dispose(); lb.dispose();
+
+		}
+
+	} );
+
+} );
