@@ -151,6 +151,8 @@ export async function loadOBJScene( options: OBJSceneOptions ): Promise<OBJScene
 
 			material.emissive.copy( material.color ).multiplyScalar( ambient );
 			material.emissiveMap = material.map;
+			// Marked so that a multi-bounce capture can switch the stand-in off: bounces replace it.
+			material.userData.ambientStandIn = true;
 
 		}
 

@@ -4,7 +4,7 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import GUI from 'lil-gui';
 import {
-	GridInterpolator, LightProbeVolume, VisibilityGuard, createProbeInterpolator, evaluateIrradiance, irradianceMatrices,
+	GridInterpolator, LightProbeVolume, VisibilityGuard, captureBounces, createProbeInterpolator, evaluateIrradiance, irradianceMatrices,
 	type TetrahedralMesh,
 } from 'three-capture-lighting';
 import { loadCharacter, type Character } from './character.js';
@@ -64,7 +64,8 @@ export interface DemoReport {
  * (no panel, no stats), `probes=0` (hide the probe markers), `drop=name,name` (leave out the
  * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
  * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`, `guard=1` (visibility
- * guard on), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`.
+ * guard on), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`,
+ * `bounces=n` (capture again n times with the static scene lit by the probes).
  */
 export class DemoApp {
 
@@ -97,6 +98,8 @@ export class DemoApp {
 		deringing: 0,
 		/** Raise the de-ringing where needed so that no probe's irradiance is negative. */
 		nonNegative: false,
+		/** Diffuse bounces added by capturing again with the static scene lit by the probes. */
+		bounces: 0,
 	};
 
 	private readonly options: DemoOptions;
@@ -135,6 +138,7 @@ export class DemoApp {
 		this.params.outside = this.query.get( 'outside' ) === 'nearest' ? 'nearest face' : 'outer cells';
 		this.params.deringing = Number( this.query.get( 'deringing' ) ?? 0 );
 		this.params.nonNegative = this.query.get( 'nonnegative' ) === '1';
+		this.params.bounces = Number( this.query.get( 'bounces' ) ?? 0 );
 
 		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
 		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
@@ -321,12 +325,14 @@ export class DemoApp {
 		const start = performance.now();
 		try {
 
-			await this.volume.capture( this.renderer, this.scene, {
+			const options = {
 				resolution: this.params.resolution, near: this.options.capture.near, far: this.options.capture.far, indices,
 				deringing: this.params.deringing, nonNegative: this.params.nonNegative,
 				exclude: [ this.helpers, ...this.dynamicObjects ],
-				onProgress: ( done, total ) => this.overlay.progress( `capturing ${done} / ${total} probes at ${this.params.resolution}²`, done / total ),
-			} );
+				onProgress: ( done: number, total: number ) => this.overlay.progress( `capturing ${done} / ${total} probes at ${this.params.resolution}²`, done / total ),
+			};
+			if ( this.params.bounces > 0 ) await this.captureWithBounces( options );
+			else await this.volume.capture( this.renderer, this.scene, options );
 			if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
 			this.report.captureMs = performance.now() - start;
 			this.overlay.progress( '', 1 );
@@ -335,6 +341,35 @@ export class DemoApp {
 		} finally {
 
 			this.capturing = false;
+
+		}
+
+	}
+
+	/**
+	 * Direct light plus `params.bounces` bounces. The scenes' faint emissive stand-in for indirect
+	 * light (loadOBJScene's `ambient`) is switched off meanwhile: the bounces replace it.
+	 */
+	private async captureWithBounces( options: Parameters<LightProbeVolume[ 'capture' ]>[ 2 ] ): Promise<void> {
+
+		const standIns = new Map<THREE.MeshStandardMaterial, THREE.Color>();
+		this.scene.traverse( ( object ) => {
+
+			for ( const material of ( [] as THREE.Material[] ).concat( ( object as THREE.Mesh ).material ?? [] ) ) {
+
+				if ( material.userData.ambientStandIn === true && ! standIns.has( material as THREE.MeshStandardMaterial ) ) standIns.set( material as THREE.MeshStandardMaterial, ( material as THREE.MeshStandardMaterial ).emissive.clone() );
+
+			}
+
+		} );
+		for ( const material of standIns.keys() ) material.emissive.setRGB( 0, 0, 0 );
+		try {
+
+			await captureBounces( this.volume, this.renderer, this.scene, { ...options, bounces: this.params.bounces, onPass: ( pass ) => this.overlay.progress( `bounce pass ${pass} / ${this.params.bounces} done`, 1 ) } );
+
+		} finally {
+
+			for ( const [ material, emissive ] of standIns ) material.emissive.copy( emissive );
 
 		}
 
@@ -369,6 +404,7 @@ export class DemoApp {
 		beyond.add( p, 'guard' ).name( 'no light through walls' ).onChange( () => this.applyGuard() );
 		beyond.add( p, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( () => this.recapture() );
 		beyond.add( p, 'nonNegative' ).name( 'irradiance never negative' ).onChange( () => this.recapture() );
+		beyond.add( p, 'bounces', 0, 3, 1 ).name( 'diffuse bounces' ).onFinishChange( () => this.recapture() );
 		const edit = gui.addFolder( 'edit probes' );
 		edit.add( p, 'edit' ).name( 'click a probe to move it' ).onChange( () => this.select( - 1 ) );
 		edit.add( { add: () => this.addProbe() }, 'add' ).name( 'add probe at target' );

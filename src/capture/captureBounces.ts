@@ -1,0 +1,290 @@
+import { Layers, type BufferGeometry, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer } from 'three';
+import type { LightProbeVolume, LightProbeVolumeCaptureOptions } from '../runtime/LightProbeVolume.js';
+import { ProbeVertexLighting } from '../runtime/ProbeVertexLighting.js';
+import { getProbeVolumeUniforms } from '../runtime/patchMaterial.js';
+import { SH_FLOATS, assertInteger } from '../validate.js';
+
+/** Options of {@link captureBounces}: the capture options of `LightProbeVolume.capture` plus these. */
+export type CaptureBouncesOptions = LightProbeVolumeCaptureOptions & {
+
+	/** Bounces of diffuse interreflection to add, 0..16: `bounces + 1` captures in all. */
+	bounces: number;
+
+	/**
+	 * The static meshes lit by the previous pass's probes during the bounce passes. Default: every
+	 * visible `Mesh` of the scene with a `MeshStandardMaterial`/`MeshPhysicalMaterial` that the
+	 * capture would draw — not skinned or instanced, not inside an object registered with
+	 * `volume.add()` or listed in `exclude`, not rejected by `filter`, on a layer the cube camera
+	 * sees, and with no probe-patched material already (such a mesh has probe light of its own).
+	 */
+	staticMeshes?: readonly Mesh[];
+
+	/**
+	 * Objects hidden during the bounce passes (pass ≥ 1) only: the scene's stand-ins for indirect
+	 * light — an `AmbientLight` or `HemisphereLight` fill, a faint emissive "ambient" glow — which
+	 * the computed bounces replace. Pass 0 is captured with them, as an ordinary capture would be.
+	 * To have no stand-in in any pass, turn it off before calling (or use `exclude`).
+	 */
+	hideInBounces?: Iterable<Object3D>;
+
+	/**
+	 * What the static meshes' vertices store during the bounce passes (see
+	 * `ProbeVertexLightingOptions.output`): `'irradiance'` (default, 12 bytes a vertex, normal and
+	 * bump maps do not change the probe light) or `'sh'` (112 bytes a vertex, per-pixel normals).
+	 * In Sibenik (bump-mapped stone) `'sh'` captured NaN in pass 1 and the capture threw; without
+	 * the bump maps it matched `'irradiance'` to 0.1 %.
+	 */
+	output?: 'irradiance' | 'sh';
+
+	/**
+	 * Called after each pass with the pass number (0 = direct light only) and `volume.sh` as it is
+	 * now — the volume's own array, overwritten by the next pass: copy it to keep it. During the
+	 * call the static meshes still carry the light that pass was captured with (none in pass 0).
+	 */
+	onPass?: ( pass: number, sh: Float32Array ) => void;
+
+};
+
+/** Statistics of one pass of {@link captureBounces}. */
+export interface BouncePass {
+
+	/** 0: direct light only; k: direct + k bounces. */
+	pass: number;
+
+	/** Mean L00 coefficient (r, g, b) over the captured probes (mean radiance = L00 × 0.282095). */
+	meanL00: [ number, number, number ];
+
+	/** Milliseconds of the capture. */
+	captureMs: number;
+
+	/** Milliseconds spent sampling the probe field at the static meshes' vertices before the capture (0 in pass 0). */
+	lightingMs: number;
+
+}
+
+/** What {@link captureBounces} returns. */
+export interface CaptureBouncesResult {
+
+	/** One entry per pass, pass 0 first; the volume's SH are the last pass's. */
+	passes: BouncePass[];
+
+	/** The static meshes that were lit during the bounce passes. */
+	staticMeshes: Mesh[];
+
+	/** Their vertices (sampled once per bounce pass). */
+	vertices: number;
+
+	/** Milliseconds in all. */
+	totalMs: number;
+
+}
+
+const MAX_BOUNCES = 16;
+
+/**
+ * Captures a volume's probes with bounced light: pass 0 is the ordinary capture (the light the
+ * scene's lights and emissive surfaces give directly); each further pass lights the static meshes
+ * with the previous pass's probes — sampled at every vertex through {@link ProbeVertexLighting},
+ * from a frozen copy of that pass's SH — and captures every probe again, so pass k holds direct
+ * light plus k bounces of diffuse interreflection, as far as per-vertex sampling of the probe
+ * field resolves it (light varies linearly across each triangle; the field is the volume's
+ * interpolator alone: zones and the visibility guard are not applied to the vertices). Each bounce
+ * multiplies the added light by roughly the scene's mean albedo, so 2–3 bounces usually get
+ * within a few per cent of the converged value.
+ *
+ * The static meshes keep their own look (colour, maps, emission): their materials are replaced by
+ * patched clones that add the probe light to three's indirect diffuse term; geometries are cloned
+ * for the bounce passes, so no user geometry is touched. Everything is restored when it returns —
+ * also when a capture throws (the volume's SH then hold the last completed pass).
+ *
+ * Stand-ins for indirect light the scene already has (an `AmbientLight` or `HemisphereLight` fill,
+ * a faint emissive glow on every surface) would be counted twice: turn them off, or pass them in
+ * `hideInBounces` so the bounces replace them from pass 1 on.
+ *
+ * ```js
+ * scene.remove( fill ); // the hemisphere light that stood in for bounced light
+ * const { passes } = await captureBounces( volume, renderer, scene, { bounces: 2, resolution: 32 } );
+ * ```
+ *
+ * @param volume The probes; its `sh` receive each pass in turn.
+ * @param renderer A WebGL2 renderer.
+ * @param scene The scene to capture.
+ * @param options See {@link CaptureBouncesOptions}.
+ */
+export async function captureBounces( volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions ): Promise<CaptureBouncesResult> {
+
+	const where = 'captureBounces';
+	if ( ! volume || typeof volume.capture !== 'function' || ! ( volume.sh instanceof Float32Array ) ) throw new TypeError( `${where}: volume must be a LightProbeVolume.` );
+	if ( ! options || typeof options !== 'object' ) throw new TypeError( `${where}: options must be an object with at least { bounces }.` );
+	const { bounces, staticMeshes, hideInBounces, output = 'irradiance', onPass, ...capture } = options;
+	assertInteger( where, 'options.bounces', bounces, 0, MAX_BOUNCES );
+	if ( output !== 'irradiance' && output !== 'sh' ) throw new RangeError( `${where}: options.output is "${String( output )}"; expected 'irradiance' or 'sh'.` );
+	if ( onPass !== undefined && typeof onPass !== 'function' ) throw new TypeError( `${where}: options.onPass must be a function.` );
+	// Consumed twice (default mesh selection and every capture): make it an array once.
+	if ( capture.exclude !== undefined ) capture.exclude = [ ...capture.exclude ];
+	const meshes = staticMeshes !== undefined ? checkMeshes( where, staticMeshes ) : findStaticMeshes( volume, scene, capture );
+	const hidden = hideInBounces !== undefined ? [ ...hideInBounces ] : [];
+	hidden.forEach( ( object, i ) => {
+
+		if ( ( object as { isObject3D?: boolean } )?.isObject3D !== true ) throw new TypeError( `${where}: options.hideInBounces[${i}] is not a three.js Object3D.` );
+
+	} );
+
+	const start = now();
+	const passes: BouncePass[] = [];
+	const captureAndMeasure = async ( pass: number, lightingMs: number ) => {
+
+		const captureStart = now();
+		await volume.capture( renderer, scene, capture );
+		passes.push( { pass, meanL00: meanL00( volume.sh, capture.indices ), captureMs: now() - captureStart, lightingMs } );
+		onPass?.( pass, volume.sh );
+
+	};
+
+	await captureAndMeasure( 0, 0 );
+	const vertices = meshes.reduce( ( sum, mesh ) => sum + ( mesh.geometry.getAttribute( 'position' )?.count ?? 0 ), 0 );
+	if ( bounces === 0 || meshes.length === 0 ) return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
+
+	// The field the vertices sample: the volume's interpolator with the previous pass's SH, frozen,
+	// so the light on the walls does not change while (role groups of) probes are captured.
+	const field = { interpolator: volume.interpolator, sh: new Float32Array( volume.sh ) };
+	const lightings: ProbeVertexLighting[] = [];
+	const swapped: { mesh: Mesh; geometry: BufferGeometry; material: Material | Material[] }[] = [];
+	const visibility = hidden.map( ( object ) => object.visible );
+	try {
+
+		let lightingStart = now();
+		for ( const mesh of meshes ) {
+
+			// A geometry of the pass's own: vertex light depends on world positions, and the user's
+			// geometry (maybe shared by other meshes) must come back untouched.
+			const geometry = mesh.geometry, copy = geometry.clone();
+			swapped.push( { mesh, geometry, material: mesh.material } );
+			mesh.geometry = copy;
+			if ( output === 'irradiance' && ! copy.getAttribute( 'normal' ) ) copy.computeVertexNormals();
+			lightings.push( new ProbeVertexLighting( mesh, field, { output } ) );
+
+		}
+
+		for ( const object of hidden ) object.visible = false;
+		for ( let pass = 1; pass <= bounces; pass ++ ) {
+
+			if ( pass > 1 ) {
+
+				lightingStart = now();
+				field.sh.set( volume.sh );
+				for ( const lighting of lightings ) lighting.update();
+
+			}
+
+			await captureAndMeasure( pass, now() - lightingStart );
+
+		}
+
+	} finally {
+
+		for ( const lighting of lightings ) lighting.dispose();
+		for ( const { mesh, geometry, material } of swapped ) {
+
+			mesh.geometry.dispose();
+			mesh.geometry = geometry;
+			mesh.material = material;
+
+		}
+
+		hidden.forEach( ( object, i ) => { object.visible = visibility[ i ]; } );
+
+	}
+
+	return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
+
+}
+
+/** Mean L00 (r, g, b) over the given probes, or all. */
+function meanL00( sh: Float32Array, indices?: ArrayLike<number> ): [ number, number, number ] {
+
+	const count = indices !== undefined ? indices.length : sh.length / SH_FLOATS;
+	const sum: [ number, number, number ] = [ 0, 0, 0 ];
+	for ( let k = 0; k < count; k ++ ) {
+
+		const base = SH_FLOATS * ( indices !== undefined ? indices[ k ] : k );
+		for ( let c = 0; c < 3; c ++ ) sum[ c ] += sh[ base + c ];
+
+	}
+
+	return count > 0 ? [ sum[ 0 ] / count, sum[ 1 ] / count, sum[ 2 ] / count ] : sum;
+
+}
+
+function isLightable( mesh: Mesh ): boolean {
+
+	const candidate = mesh as Mesh & { isSkinnedMesh?: boolean; isInstancedMesh?: boolean };
+	if ( candidate.isMesh !== true || candidate.isSkinnedMesh === true || candidate.isInstancedMesh === true ) return false;
+	const position = mesh.geometry?.getAttribute( 'position' );
+	return position !== undefined && position.itemSize >= 3;
+
+}
+
+function standardMaterials( mesh: Mesh ): Material[] {
+
+	return ( Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ] ).filter( ( material ) => ( material as { isMeshStandardMaterial?: boolean } )?.isMeshStandardMaterial === true );
+
+}
+
+function checkMeshes( where: string, meshes: readonly Mesh[] ): Mesh[] {
+
+	if ( ! Array.isArray( meshes ) ) throw new TypeError( `${where}: options.staticMeshes must be an array of meshes.` );
+	const unique = [ ...new Set( meshes ) ];
+	unique.forEach( ( mesh, i ) => {
+
+		if ( ! mesh || ( mesh as { isMesh?: boolean } ).isMesh !== true ) throw new TypeError( `${where}: options.staticMeshes[${i}] is not a three.js Mesh.` );
+		const name = mesh.name ? ` ("${mesh.name}")` : '';
+		if ( ! isLightable( mesh ) ) throw new TypeError( `${where}: options.staticMeshes[${i}]${name} is skinned, instanced or has no position attribute; bounce light is sampled at static vertices.` );
+		const materials = standardMaterials( mesh );
+		if ( materials.length === 0 ) throw new TypeError( `${where}: options.staticMeshes[${i}]${name} has no MeshStandardMaterial or MeshPhysicalMaterial to light.` );
+		if ( materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) {
+
+			throw new Error( `${where}: options.staticMeshes[${i}]${name} already has a probe-lit (patched) material; it would receive probe light twice.` );
+
+		}
+
+	} );
+
+	return unique;
+
+}
+
+/** The default static meshes: what the capture draws and a bounce can light (see CaptureBouncesOptions.staticMeshes). */
+function findStaticMeshes( volume: LightProbeVolume, scene: Scene, capture: LightProbeVolumeCaptureOptions ): Mesh[] {
+
+	const excluded = new Set<Object3D>( capture.exclude as Object3D[] | undefined ?? [] );
+	const seen = [ capture.layers ?? new Layers() ];
+	for ( const settings of Object.values( capture.roles ?? {} ) ) if ( settings?.layers ) seen.push( settings.layers );
+	const meshes: Mesh[] = [];
+	scene.traverseVisible( ( object ) => {
+
+		const mesh = object as Mesh;
+		if ( ! isLightable( mesh ) ) return;
+		if ( ! seen.some( ( layers ) => mesh.layers.test( layers ) ) ) return;
+		const materials = standardMaterials( mesh );
+		if ( materials.length === 0 || materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) return;
+		for ( let node: Object3D | null = mesh; node !== null; node = node.parent ) {
+
+			if ( excluded.has( node ) || volume.getUniforms( node ) !== null ) return;
+			if ( capture.filter && node !== scene && ! capture.filter( node ) ) return;
+
+		}
+
+		meshes.push( mesh );
+
+	} );
+
+	return meshes;
+
+}
+
+function now(): number {
+
+	return typeof performance !== 'undefined' ? performance.now() : Date.now();
+
+}
