@@ -1,0 +1,473 @@
+import { orient, inSphere, inSphereTieBreak, inCirclePerturbed } from './predicates.js';
+
+/** The vertex at infinity of ghost tetrahedra. */
+export const INF = - 1;
+
+/** Marks a released cell slot (in its first vertex). */
+export const FREE = - 2;
+
+// SLOT_PAIR[8i + 2j], [8i + 2j + 1]: the two slots of a tetrahedron other than i and j.
+const SLOT_PAIR = new Int8Array( 32 );
+for ( let i = 0; i < 4; i ++ ) for ( let j = 0; j < 4; j ++ ) {
+
+	const rest = [ 0, 1, 2, 3 ].filter( ( m ) => m !== i && m !== j );
+	SLOT_PAIR[ 8 * i + 2 * j ] = rest[ 0 ] ?? 0;
+	SLOT_PAIR[ 8 * i + 2 * j + 1 ] = rest[ 1 ] ?? 0;
+
+}
+
+const _startCells = new Int32Array( 5 );
+const _startVertices = new Int32Array( 4 );
+
+/**
+ * Incremental Delaunay state in flat typed arrays, the insertion core shared by `tetrahedralize`
+ * and `DynamicTetrahedralization` (internal: not exported from the package).
+ *
+ * Tetrahedron t has vertices `vertices[4t..4t+3]` (INF for the vertex at infinity) and
+ * `adjacency[4t+i] = 4u + j`: the face opposite vertex i of t is the face opposite vertex j of u.
+ * A ghost tetrahedron replaces one vertex of a hull face's outside by INF, ordered so that putting
+ * any point beyond that face in INF's slot gives a positive tetrahedron; that makes "replace the
+ * opposite vertex by the new point" valid for ghosts too.
+ *
+ * `vertices` and `adjacency` are reallocated when the slot capacity grows (in `allocate` /
+ * `reserve`): re-read them after any call that may create cells.
+ */
+export class DelaunayBuilder {
+
+	/** Flat x, y, z of every point the cells may refer to (shared with the owner, who may replace it). */
+	p: Float64Array;
+	/** A length of the order of the point set's extent, for the coplanar in-circle test. */
+	extent: number;
+	/** Four vertices per cell slot; `vertices[4t] === FREE` for a released slot. */
+	vertices: Int32Array;
+	/** Face links per cell slot, `4u + j` (see the class comment). */
+	adjacency: Int32Array;
+	/** Number of slots in use or released (slots ≥ used were never allocated). */
+	used = 0;
+	/** Slot capacity of `vertices` / `adjacency`. */
+	capacity: number;
+	/** The cell the next point-location walk starts from. */
+	last = 0;
+
+	/** Cells of the last conflict region (`findConflicts`), `cavitySize` of them. */
+	cavity = new Int32Array( 256 );
+	cavitySize = 0;
+	/** Boundary faces of the last conflict region as `4t + i` (t in the cavity), `boundarySize` of them. */
+	boundary = new Int32Array( 256 );
+	boundarySize = 0;
+	/** Cells created by the last `fillConflicts`, one per boundary face (`boundarySize` of them). */
+	created = new Int32Array( 256 );
+
+	private mark: Int32Array;
+	private freeList: Int32Array;
+	private freeCount = 0;
+	private stamp = 0;
+	private random = 0x2545F491;
+
+	// Per-insertion scratch, grown on demand.
+	private stack = new Int32Array( 256 );
+	private edgeKeyA = new Int32Array( 1024 );
+	private edgeKeyB = new Int32Array( 1024 );
+	private edgeValue = new Int32Array( 1024 );
+	private edgeStamp = new Int32Array( 1024 );
+
+	constructor( p: Float64Array, pointCount: number, diagonal: number ) {
+
+		this.p = p;
+		this.extent = diagonal;
+		this.capacity = Math.max( 64, Math.ceil( pointCount * 7.5 ) );
+		this.vertices = new Int32Array( 4 * this.capacity );
+		this.adjacency = new Int32Array( 4 * this.capacity );
+		this.mark = new Int32Array( this.capacity );
+		this.freeList = new Int32Array( 64 );
+
+	}
+
+	/** Forgets every cell (keeps the storage), for building another triangulation in it. */
+	reset(): void {
+
+		this.used = 0;
+		this.freeCount = 0;
+		this.last = 0;
+
+	}
+
+	/** Creates the first tetrahedron abcd (positively oriented) and its four ghosts. */
+	start( [ a, b, c, d ]: [ number, number, number, number ] ): void {
+
+		const t = this.allocate();
+		this.setVertices( t, a, b, c, d );
+
+		// Ghost opposite vertex k: the tetrahedron with vertex k replaced by INF has the new point
+		// on the wrong side, so swap two of the remaining slots to flip the orientation.
+		const cells = _startCells, v = _startVertices;
+		cells[ 0 ] = t;
+		for ( let k = 0; k < 4; k ++ ) {
+
+			const g = this.allocate();
+			v[ 0 ] = a; v[ 1 ] = b; v[ 2 ] = c; v[ 3 ] = d;
+			v[ k ] = INF;
+			const i = ( k + 1 ) & 3, j = ( k + 2 ) & 3;
+			const s = v[ i ]; v[ i ] = v[ j ]; v[ j ] = s;
+			this.setVertices( g, v[ 0 ], v[ 1 ], v[ 2 ], v[ 3 ] );
+			cells[ k + 1 ] = g;
+
+		}
+
+		// Five cells, linked by comparing their faces; done once per triangulation, so brute force is fine.
+		for ( let x = 0; x < 5; x ++ ) {
+
+			const u = cells[ x ];
+			for ( let i = 0; i < 4; i ++ ) {
+
+				for ( let y = 0; y < 5; y ++ ) {
+
+					const w = cells[ y ];
+					if ( w === u ) continue;
+					for ( let j = 0; j < 4; j ++ ) {
+
+						if ( this.sameFace( u, i, w, j ) ) this.adjacency[ 4 * u + i ] = 4 * w + j;
+
+					}
+
+				}
+
+			}
+
+		}
+
+		this.last = t;
+
+	}
+
+	private sameFace( u: number, i: number, w: number, j: number ): boolean {
+
+		// Vertices within a cell are distinct, so two triples are equal when each of one is in the other.
+		const v = this.vertices;
+		for ( let k = 0; k < 4; k ++ ) {
+
+			if ( k === i ) continue;
+			const x = v[ 4 * u + k ];
+			let found = false;
+			for ( let m = 0; m < 4; m ++ ) if ( m !== j && v[ 4 * w + m ] === x ) found = true;
+			if ( ! found ) return false;
+
+		}
+
+		return true;
+
+	}
+
+	private setVertices( t: number, a: number, b: number, c: number, d: number ): void {
+
+		const v = this.vertices, k = 4 * t;
+		v[ k ] = a; v[ k + 1 ] = b; v[ k + 2 ] = c; v[ k + 3 ] = d;
+
+	}
+
+	/** A free cell slot (reusing released ones first); may reallocate the arrays. */
+	allocate(): number {
+
+		if ( this.freeCount > 0 ) return this.freeList[ -- this.freeCount ];
+		if ( this.used === this.capacity ) this.grow();
+		return this.used ++;
+
+	}
+
+	/** Returns slot t to the free list and marks it FREE. */
+	release( t: number ): void {
+
+		if ( this.freeCount === this.freeList.length ) this.freeList = growInt32( this.freeList, this.freeList.length * 2 );
+		this.freeList[ this.freeCount ++ ] = t;
+		this.vertices[ 4 * t ] = FREE;
+
+	}
+
+	private grow(): void {
+
+		const capacity = this.capacity * 2;
+		this.vertices = growInt32( this.vertices, 4 * capacity );
+		this.adjacency = growInt32( this.adjacency, 4 * capacity );
+		this.mark = growInt32( this.mark, capacity );
+		this.capacity = capacity;
+
+	}
+
+	/** True when slot t is a ghost cell (one vertex is INF). */
+	isGhost( t: number ): boolean {
+
+		const v = this.vertices, k = 4 * t;
+		return v[ k ] === INF || v[ k + 1 ] === INF || v[ k + 2 ] === INF || v[ k + 3 ] === INF;
+
+	}
+
+	/**
+	 * Visibility walk to a cell whose closure contains q (finite) or a ghost whose hull face q is
+	 * strictly beyond. Stochastic face order rules out cycles (Devillers, Pion & Teillaud 2002).
+	 */
+	locate( q: number ): number {
+
+		const v = this.vertices, adj = this.adjacency, p = this.p;
+		let t = this.last;
+		if ( t >= this.used || v[ 4 * t ] === FREE ) t = 0;
+		while ( v[ 4 * t ] === FREE ) t ++;
+		if ( this.isGhost( t ) ) {
+
+			for ( let i = 0; i < 4; i ++ ) if ( v[ 4 * t + i ] === INF ) t = adj[ 4 * t + i ] >> 2;
+
+		}
+
+		let previous = - 1;
+		walk: for ( ;; ) {
+
+			this.random ^= this.random << 13; this.random ^= this.random >>> 17; this.random ^= this.random << 5;
+			const offset = this.random & 3;
+			const k = 4 * t;
+			const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
+			for ( let s = 0; s < 4; s ++ ) {
+
+				const i = ( offset + s ) & 3;
+				const next = adj[ k + i ] >> 2;
+				if ( next === previous ) continue;
+				let o: number;
+				if ( i === 0 ) o = orient( p, q, b, c, d );
+				else if ( i === 1 ) o = orient( p, a, q, c, d );
+				else if ( i === 2 ) o = orient( p, a, b, q, d );
+				else o = orient( p, a, b, c, q );
+				if ( o < 0 ) {
+
+					previous = t;
+					t = next;
+					if ( this.isGhost( t ) ) return t;
+					continue walk;
+
+				}
+
+			}
+
+			return t;
+
+		}
+
+	}
+
+	private inConflict( t: number, q: number ): boolean {
+
+		const v = this.vertices, p = this.p, k = 4 * t;
+		const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
+		if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
+
+			const s = inSphere( p, a, b, c, d, q );
+			if ( s !== 0 ) return s > 0;
+			return inSphereTieBreak( p, a, b, c, d, q ) > 0;
+
+		}
+
+		// Ghost: in conflict when q is strictly beyond the hull face, or on its plane and inside
+		// the face's perturbed circumcircle.
+		let o: number, f0: number, f1: number, f2: number;
+		if ( a === INF ) { o = orient( p, q, b, c, d ); f0 = b; f1 = c; f2 = d; }
+		else if ( b === INF ) { o = orient( p, a, q, c, d ); f0 = a; f1 = c; f2 = d; }
+		else if ( c === INF ) { o = orient( p, a, b, q, d ); f0 = a; f1 = b; f2 = d; }
+		else { o = orient( p, a, b, c, q ); f0 = a; f1 = b; f2 = c; }
+		if ( o !== 0 ) return o > 0;
+		return inCirclePerturbed( p, f0, f1, f2, q, this.extent ) > 0;
+
+	}
+
+	/** Inserts point q: `findConflicts` then `fillConflicts`. */
+	insert( q: number ): void {
+
+		this.findConflicts( q, this.locate( q ) );
+		this.fillConflicts( q );
+
+	}
+
+	/**
+	 * Floods the conflict region of q from the cell `start` (which must be in conflict, e.g. from
+	 * `locate`) into `cavity` and its boundary faces into `boundary`. Changes no cell.
+	 */
+	findConflicts( q: number, start: number ): void {
+
+		const mark = this.mark;
+		const inStamp = ( this.stamp += 2 );
+		const outStamp = inStamp + 1;
+
+		// Flood the conflict region (connected, star-shaped from q) and collect its boundary faces.
+		const adj = this.adjacency;
+		let stackSize = 0, cavitySize = 0, boundarySize = 0;
+		mark[ start ] = inStamp;
+		this.stack[ stackSize ++ ] = start;
+		while ( stackSize > 0 ) {
+
+			const t = this.stack[ -- stackSize ];
+			if ( cavitySize === this.cavity.length ) this.cavity = growInt32( this.cavity, cavitySize * 2 );
+			this.cavity[ cavitySize ++ ] = t;
+			for ( let i = 0; i < 4; i ++ ) {
+
+				const u = adj[ 4 * t + i ] >> 2;
+				const m = mark[ u ];
+				if ( m === inStamp ) continue;
+				if ( m !== outStamp && this.inConflict( u, q ) ) {
+
+					mark[ u ] = inStamp;
+					if ( stackSize === this.stack.length ) this.stack = growInt32( this.stack, stackSize * 2 );
+					this.stack[ stackSize ++ ] = u;
+
+				} else {
+
+					mark[ u ] = outStamp;
+					if ( boundarySize === this.boundary.length ) this.boundary = growInt32( this.boundary, boundarySize * 2 );
+					this.boundary[ boundarySize ++ ] = 4 * t + i;
+
+				}
+
+			}
+
+		}
+
+		this.cavitySize = cavitySize;
+		this.boundarySize = boundarySize;
+
+	}
+
+	/**
+	 * Replaces the conflict region found by the last `findConflicts( q )` by the cells joining q
+	 * to its boundary faces (listed in `created`); the region's cells are released.
+	 */
+	fillConflicts( q: number ): void {
+
+		const boundarySize = this.boundarySize, cavitySize = this.cavitySize;
+
+		// One new cell per boundary face: the conflict cell with its vertex opposite that face
+		// replaced by q, which keeps the orientation (q sees the face from the same side).
+		this.reserve( boundarySize );
+		const v = this.vertices;
+		const adj = this.adjacency;
+		if ( this.created.length < boundarySize ) this.created = new Int32Array( boundarySize * 2 );
+		const mask = this.prepareEdgeTable( boundarySize * 3 ) - 1;
+		const edgeStamp = ++ this.stamp;
+		const keyA = this.edgeKeyA, keyB = this.edgeKeyB, value = this.edgeValue, used = this.edgeStamp;
+		for ( let f = 0; f < boundarySize; f ++ ) {
+
+			const face = this.boundary[ f ];
+			const t = face >> 2, i = face & 3;
+			const outside = adj[ face ];
+			const n = this.allocate();
+			const k = 4 * n;
+			for ( let j = 0; j < 4; j ++ ) v[ k + j ] = v[ 4 * t + j ];
+			v[ k + i ] = q;
+			adj[ k + i ] = outside;
+			adj[ outside ] = k + i;
+			this.created[ f ] = n;
+
+			// The three faces through q are shared with other new cells; pair them by the edge they
+			// have besides q (the two slots other than i and j).
+			for ( let j = 0; j < 4; j ++ ) {
+
+				if ( j === i ) continue;
+				const m0 = SLOT_PAIR[ 8 * i + 2 * j ], m1 = SLOT_PAIR[ 8 * i + 2 * j + 1 ];
+				let e0 = v[ k + m0 ], e1 = v[ k + m1 ];
+				if ( e0 > e1 ) { const s = e0; e0 = e1; e1 = s; }
+				let h = ( Math.imul( e0 + 2, 0x9E3779B1 ) ^ Math.imul( e1 + 2, 0x85EBCA77 ) ) & mask;
+				for ( ;; ) {
+
+					if ( used[ h ] !== edgeStamp ) {
+
+						used[ h ] = edgeStamp;
+						keyA[ h ] = e0;
+						keyB[ h ] = e1;
+						value[ h ] = k + j;
+						break;
+
+					}
+
+					if ( keyA[ h ] === e0 && keyB[ h ] === e1 ) {
+
+						const other = value[ h ];
+						adj[ k + j ] = other;
+						adj[ other ] = k + j;
+						// Each edge is shared by exactly two new cells; retire the entry.
+						keyA[ h ] = keyB[ h ] = FREE - 1;
+						break;
+
+					}
+
+					h = ( h + 1 ) & mask;
+
+				}
+
+			}
+
+		}
+
+		for ( let c = 0; c < cavitySize; c ++ ) this.release( this.cavity[ c ] );
+		this.last = this.created[ boundarySize - 1 ];
+
+	}
+
+	/** Makes room for `count` more cells so that arrays stay put while new cells are linked. */
+	reserve( count: number ): void {
+
+		while ( this.used + Math.max( 0, count - this.freeCount ) > this.capacity ) this.grow();
+
+	}
+
+	private prepareEdgeTable( entries: number ): number {
+
+		let size = this.edgeStamp.length;
+		if ( size < entries * 2 ) {
+
+			while ( size < entries * 2 ) size *= 2;
+			this.edgeKeyA = new Int32Array( size );
+			this.edgeKeyB = new Int32Array( size );
+			this.edgeValue = new Int32Array( size );
+			this.edgeStamp = new Int32Array( size );
+
+		}
+
+		return size;
+
+	}
+
+	/** Compacts the finite cells into the output arrays. */
+	finish(): { tetrahedra: Uint32Array; neighbors: Int32Array } {
+
+		const v = this.vertices, adj = this.adjacency;
+		const index = new Int32Array( this.used ).fill( - 1 );
+		let count = 0;
+		for ( let t = 0; t < this.used; t ++ ) {
+
+			if ( v[ 4 * t ] !== FREE && ! this.isGhost( t ) ) index[ t ] = count ++;
+
+		}
+
+		const tetrahedra = new Uint32Array( 4 * count );
+		const neighbors = new Int32Array( 4 * count );
+		for ( let t = 0; t < this.used; t ++ ) {
+
+			const o = index[ t ];
+			if ( o < 0 ) continue;
+			for ( let i = 0; i < 4; i ++ ) {
+
+				tetrahedra[ 4 * o + i ] = v[ 4 * t + i ];
+				neighbors[ 4 * o + i ] = index[ adj[ 4 * t + i ] >> 2 ];
+
+			}
+
+		}
+
+		return { tetrahedra, neighbors };
+
+	}
+
+}
+
+/** A copy of `array` resized to `length` (truncated or zero-padded). */
+export function growInt32( array: Int32Array, length: number ): Int32Array<ArrayBuffer> {
+
+	const grown = new Int32Array( length );
+	grown.set( array.subarray( 0, Math.min( array.length, length ) ) );
+	return grown;
+
+}
