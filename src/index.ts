@@ -9,6 +9,8 @@ export * from './sh/index.js';
 
 export { tetrahedralize, DegenerateInputError } from './tetrahedra/tetrahedralize.js';
 export type { Tetrahedralization, TetrahedralizeOptions, DegenerateReason } from './tetrahedra/tetrahedralize.js';
+export { DynamicTetrahedralization } from './tetrahedra/DynamicTetrahedralization.js';
+export type { TetrahedralEdit } from './tetrahedra/DynamicTetrahedralization.js';
 
 export type { ProbeInterpolator } from './interpolation/ProbeInterpolator.js';
 export { TetrahedralMesh } from './interpolation/TetrahedralMesh.js';
