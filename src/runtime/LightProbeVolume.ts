@@ -9,6 +9,8 @@ import { irradianceMatrices } from '../sh/irradiance.js';
 import { makeIrradianceNonNegative, windowSH } from '../sh/windowSH.js';
 import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { ProbeVertexLighting } from './ProbeVertexLighting.js';
+import { ProbeTextureLighting } from './ProbeTextureLighting.js';
 import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
 import { ProbeZones, type ProbeZoneDefinition } from './ProbeZones.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
@@ -125,6 +127,30 @@ export interface AddOptions {
 	 */
 	zone?: string;
 
+	/**
+	 * How the object is lit:
+	 * - `'object'` (default): one blend of the probes at the object's anchor, updated every frame —
+	 *   for characters, props, anything that moves.
+	 * - `'vertex'`: the probe field sampled at every vertex (see `ProbeVertexLighting`) — for large
+	 *   static or rarely moved meshes (floors, long walls) that one colour would flatten.
+	 * - `'texture'`: the field resampled into a 3D SH texture over the object's bounds and read per
+	 *   pixel (see `ProbeTextureLighting`) — for large objects whose tessellation is coarse.
+	 *
+	 * Vertex and texture modes sample the whole volume (not zones, without the visibility guard),
+	 * and their objects stay visible in captures (they are scene, not visitors), their probe light
+	 * switched off meanwhile so probes see them as built; `captureBounces` adds their bounces.
+	 */
+	mode?: 'object' | 'vertex' | 'texture';
+
+	/** `'vertex'` mode: store per-vertex irradiance (default) or per-vertex SH (normal maps respond). */
+	vertexOutput?: 'irradiance' | 'sh';
+
+	/** `'texture'` mode: world size of a texel (default: the longest side / 31). */
+	texelSize?: number;
+
+	/** `'texture'` mode: largest texel count per axis (default 64). */
+	maxResolution?: number;
+
 }
 
 interface Lit {
@@ -154,6 +180,8 @@ interface Lit {
 	guardValid: boolean;
 	/** Nearest visible probe when every weighted probe is blocked: −2 not searched yet, −1 none. */
 	guardFallback: number;
+	/** Large-object modes: the per-vertex lightings (one per mesh) or the 3D-texture lighting. */
+	large: ( ProbeVertexLighting | ProbeTextureLighting )[] | null;
 
 }
 
@@ -364,31 +392,43 @@ export class LightProbeVolume {
 		const deringing = options.deringing ?? 0;
 		if ( ! ( deringing >= 0 && deringing <= 1 ) ) throw new RangeError( `${where}: options.deringing must be in [0, 1], got ${options.deringing}.` );
 		const nonNegative = options.nonNegative === true;
-		const exclude = [ ...this.lit.map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
+		// Visitors are hidden; large objects lit by the field are scene, seen as built (probe light off).
+		const exclude = [ ...this.lit.filter( ( entry ) => entry.large === null ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
+		const intensities: [ { value: number }, number ][] = [];
+		for ( const entry of this.lit ) for ( const lighting of entry.large ?? [] ) intensities.push( [ lighting.uniforms.probeVolumeIntensity, lighting.uniforms.probeVolumeIntensity.value ] );
+		for ( const [ uniform ] of intensities ) uniform.value = 0;
 		const total = indices.length;
 		let done = 0;
-		for ( const [ role, group ] of groups ) {
+		try {
 
-			const settings = { ...options, ...( role ? options.roles?.[ role as ProbeRole ] : {} ) };
-			const positions = new Float64Array( 3 * group.length );
-			group.forEach( ( index, k ) => positions.set( this.positions.subarray( 3 * index, 3 * index + 3 ), 3 * k ) );
-			const capturer = new ProbeCapturer( renderer, settings );
-			try {
+			for ( const [ role, group ] of groups ) {
 
-				const start = done;
-				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * group.length ), {
-					...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
-				} );
-				if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
-				else if ( deringing > 0 ) windowSH( captured, deringing, captured );
-				group.forEach( ( index, k ) => this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
-				done += group.length;
+				const settings = { ...options, ...( role ? options.roles?.[ role as ProbeRole ] : {} ) };
+				const positions = new Float64Array( 3 * group.length );
+				group.forEach( ( index, k ) => positions.set( this.positions.subarray( 3 * index, 3 * index + 3 ), 3 * k ) );
+				const capturer = new ProbeCapturer( renderer, settings );
+				try {
 
-			} finally {
+					const start = done;
+					const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * group.length ), {
+						...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
+					} );
+					if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
+					else if ( deringing > 0 ) windowSH( captured, deringing, captured );
+					group.forEach( ( index, k ) => this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
+					done += group.length;
 
-				capturer.dispose();
+				} finally {
+
+					capturer.dispose();
+
+				}
 
 			}
+
+		} finally {
+
+			for ( const [ uniform, value ] of intensities ) uniform.value = value;
 
 		}
 
@@ -505,8 +545,43 @@ export class LightProbeVolume {
 			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 }, probeVolumeDirectScale: { value: 1 } },
 			replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor ),
 			fixedZone, zone: - 1, guardPosition: new Float64Array( 3 ), guardIndices: new Uint32Array( MAX_WEIGHTS ),
-			guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2,
+			guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2, large: null,
 		};
+
+		const mode = options.mode ?? 'object';
+		if ( mode === 'vertex' || mode === 'texture' ) {
+
+			entry.large = [];
+			try {
+
+				if ( mode === 'texture' ) {
+
+					entry.large.push( new ProbeTextureLighting( object, this, { intensity: options.intensity, texelSize: options.texelSize, maxResolution: options.maxResolution } ) );
+
+				} else {
+
+					object.traverse( ( child ) => {
+
+						if ( ( child as Mesh ).isMesh === true ) entry.large!.push( new ProbeVertexLighting( child as Mesh, this, { intensity: options.intensity, output: options.vertexOutput } ) );
+
+					} );
+
+				}
+
+			} catch ( error ) {
+
+				for ( const lighting of entry.large ) lighting.dispose();
+				throw error;
+
+			}
+
+			entry.uniforms = entry.large[ 0 ]?.uniforms ?? entry.uniforms;
+			this.lit.push( entry );
+			return this;
+
+		}
+
+		if ( mode !== 'object' ) throw new RangeError( `LightProbeVolume.add: options.mode must be 'object', 'vertex' or 'texture', got ${String( mode )}.` );
 
 		const owned = new Set<Material>();
 		for ( const other of this.lit ) for ( const material of other.patched ) owned.add( material );
@@ -570,6 +645,7 @@ export class LightProbeVolume {
 		const index = this.lit.findIndex( ( entry ) => entry.object === object );
 		if ( index < 0 ) return this;
 		const [ entry ] = this.lit.splice( index, 1 );
+		for ( const lighting of entry.large ?? [] ) lighting.dispose();
 		for ( const { mesh, original } of entry.replaced ) mesh.material = original;
 		for ( const material of entry.patched ) unpatchMaterial( material );
 		for ( const material of entry.clones ) material.dispose();
@@ -607,6 +683,14 @@ export class LightProbeVolume {
 	}
 
 	private updateEntry( entry: Lit ): void {
+
+		if ( entry.large !== null ) {
+
+			// Resample only when the object moved or the probes' SH changed (checked inside).
+			for ( let i = 0; i < entry.large.length; i ++ ) entry.large[ i ].update();
+			return;
+
+		}
 
 		const object = entry.object;
 		object.updateWorldMatrix( true, false );

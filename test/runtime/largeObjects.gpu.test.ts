@@ -170,6 +170,58 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 
 	}
 
+	for ( const mode of [ 'vertex', 'texture' ] as const ) {
+
+		it( `LightProbeVolume.add( floor, { mode: '${mode}' } ): the gradient within 2/255, update() follows a move, remove() restores the material`, () => {
+
+			const volume = fieldVolume();
+			const floor = floorMesh();
+			const material = floor.material;
+			volume.add( floor, { mode } );
+			volume.update();
+			expect( floor.material ).not.toBe( material );
+			expect( worstAgainstReference( render( floor ) ) ).toBeLessThanOrEqual( 2 );
+			// Moved 3 units along x: the light must follow the field, not stay baked at the old place.
+			floor.position.x = 3;
+			floor.updateMatrixWorld();
+			volume.update();
+			const moved = render( floor );
+			const want = expected( 5, 0 ), got = pixel( moved, camera, 5, 0 );
+			for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ) ).toBeLessThanOrEqual( 2 );
+			volume.remove( floor );
+			expect( floor.material ).toBe( material );
+			floor.geometry.dispose();
+
+		} );
+
+	}
+
+	it( 'LightProbeVolume.capture: a floor added in vertex mode stays in the probes\' view, seen as built (its probe light off); an object-mode visitor is hidden', async () => {
+
+		// A red emissive floor under one probe: the probe sees red from below only if the floor is
+		// captured; its own probe light (a huge intensity here) must not leak into what it sees.
+		const scene = new THREE.Scene();
+		const floor = new THREE.Mesh( new THREE.PlaneGeometry( 20, 20 ).rotateX( - Math.PI / 2 ), new THREE.MeshStandardMaterial( { color: 0xffffff, emissive: 0xff0000, roughness: 1 } ) );
+		scene.add( floor );
+		const positions = [ - 1, 1, - 1, 1, 1, - 1, - 1, 1, 1, 1, 3, 1 ];
+		const sh = new Array( 4 * 27 ).fill( 0 ).map( ( _, k ) => ( k % 27 === 1 ? 50 : 0 ) ); // bright green ambient
+		const volume = new LightProbeVolume( { positions, sh } );
+		volume.add( floor, { mode: 'vertex' } );
+		await volume.capture( renderer, scene, { resolution: 8, type: THREE.FloatType } );
+		const l00 = volume.sh.slice( 0, 3 );
+		expect( l00[ 0 ] ).toBeGreaterThan( 0.5 ); // red floor seen
+		expect( l00[ 1 ] ).toBeLessThan( 1e-3 ); // not its green probe light
+		const lighting = volume.getUniforms( floor )!;
+		expect( lighting.probeVolumeIntensity.value ).toBe( 1 ); // restored after the capture
+		volume.remove( floor );
+		volume.add( floor ); // now a visitor: hidden from captures
+		await volume.capture( renderer, scene, { resolution: 8, type: THREE.FloatType } );
+		expect( volume.sh[ 0 ] ).toBe( 0 );
+		volume.dispose();
+		floor.geometry.dispose();
+
+	} );
+
 	it( 'texture mode (half-float 3D texture, hardware trilinear): every sample point within 2/255 of the reference', () => {
 
 		const volume = fieldVolume();
