@@ -142,6 +142,13 @@ export interface AddOptions {
 	 */
 	mode?: 'object' | 'vertex' | 'texture';
 
+	/**
+	 * Whether `capture()` hides the object. Default: true in `'object'` mode (a visitor must not
+	 * light the probes it is lit by), false in the large-object modes (scenery). A static object lit
+	 * in `'object'` mode (a statue) can pass false to stay in the probes' view.
+	 */
+	hideInCaptures?: boolean;
+
 	/** `'vertex'` mode: store per-vertex irradiance (default) or per-vertex SH (normal maps respond). */
 	vertexOutput?: 'irradiance' | 'sh';
 
@@ -182,6 +189,8 @@ interface Lit {
 	guardFallback: number;
 	/** Large-object modes: the per-vertex lightings (one per mesh) or the 3D-texture lighting. */
 	large: ( ProbeVertexLighting | ProbeTextureLighting )[] | null;
+	/** Hidden during `capture()`. */
+	hidden: boolean;
 
 }
 
@@ -392,10 +401,17 @@ export class LightProbeVolume {
 		const deringing = options.deringing ?? 0;
 		if ( ! ( deringing >= 0 && deringing <= 1 ) ) throw new RangeError( `${where}: options.deringing must be in [0, 1], got ${options.deringing}.` );
 		const nonNegative = options.nonNegative === true;
-		// Visitors are hidden; large objects lit by the field are scene, seen as built (probe light off).
-		const exclude = [ ...this.lit.filter( ( entry ) => entry.large === null ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
+		// Visitors are hidden; scenery lit by the probes (large objects) is seen as built: probe light off.
+		const exclude = [ ...this.lit.filter( ( entry ) => entry.hidden ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
 		const intensities: [ { value: number }, number ][] = [];
-		for ( const entry of this.lit ) for ( const lighting of entry.large ?? [] ) intensities.push( [ lighting.uniforms.probeVolumeIntensity, lighting.uniforms.probeVolumeIntensity.value ] );
+		for ( const entry of this.lit ) {
+
+			if ( entry.hidden ) continue;
+			const all = entry.large ? entry.large.map( ( lighting ) => lighting.uniforms ) : [ entry.uniforms ];
+			for ( const uniforms of all ) intensities.push( [ uniforms.probeVolumeIntensity, uniforms.probeVolumeIntensity.value ] );
+
+		}
+
 		for ( const [ uniform ] of intensities ) uniform.value = 0;
 		const total = indices.length;
 		let done = 0;
@@ -545,10 +561,11 @@ export class LightProbeVolume {
 			uniforms: { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: options.intensity ?? 1 }, probeVolumeDirectScale: { value: 1 } },
 			replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor ),
 			fixedZone, zone: - 1, guardPosition: new Float64Array( 3 ), guardIndices: new Uint32Array( MAX_WEIGHTS ),
-			guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2, large: null,
+			guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2, large: null, hidden: true,
 		};
 
 		const mode = options.mode ?? 'object';
+		entry.hidden = options.hideInCaptures ?? mode === 'object';
 		if ( mode === 'vertex' || mode === 'texture' ) {
 
 			entry.large = [];
