@@ -5,7 +5,7 @@ import Stats from 'three/addons/libs/stats.module.js';
 import GUI from 'lil-gui';
 import {
 	GridInterpolator, LightProbeVolume, VisibilityGuard, captureBounces, createProbeInterpolator, evaluateIrradiance, irradianceMatrices,
-	type TetrahedralMesh,
+	type AddOptions, type TetrahedralMesh,
 } from 'three-capture-lighting';
 import { loadCharacter, type Character } from './character.js';
 import { Overlay } from './Overlay.js';
@@ -116,6 +116,8 @@ export class DemoApp {
 	private readonly timer = new THREE.Timer();
 	private readonly hemisphere = new Float32Array( 48 );
 	private ball: THREE.Mesh | null = null;
+	/** Static scene objects lit by the probes (large-object modes), re-added to every new volume. */
+	private readonly scenery = new Map<THREE.Object3D, AddOptions>();
 	private selected = - 1;
 	private time = 0;
 	private fps = 0;
@@ -274,7 +276,7 @@ export class DemoApp {
 	private rebuildVolume( sh?: Float32Array ): void {
 
 		const layout = this.layout;
-		for ( const object of this.dynamicObjects ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
+		for ( const object of [ ...this.dynamicObjects, ...this.scenery.keys() ] ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
 		const interpolator = createProbeInterpolator( layout.positions, { outside: this.params.outside === 'nearest face' ? 'nearestFace' : 'outerCells' } );
 		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator } );
 		this.trilinear = null;
@@ -288,6 +290,7 @@ export class DemoApp {
 		if ( this.params.interpolation === 'trilinear' && ! this.trilinear ) this.params.interpolation = 'tetrahedral';
 		this.applyGuard();
 		for ( const object of this.dynamicObjects ) this.activeVolume.add( object );
+		for ( const [ object, options ] of this.scenery ) this.activeVolume.add( object, options );
 		this.report.probes = this.volume.count;
 		this.gui?.controllersRecursive().forEach( ( c ) => c.updateDisplay() );
 
@@ -307,6 +310,18 @@ export class DemoApp {
 		this.volume.setOccluders( occluders );
 		this.trilinear?.setOccluders( occluders );
 		this.report.leakingCells = this.params.guard ? this.volume.findLeakingTetrahedra().length : 0;
+
+	}
+
+	/**
+	 * Lights a static scene object with the probes (e.g. a floor per vertex or per pixel, see
+	 * `AddOptions.mode`), in this and every later volume; `options = null` stops it.
+	 */
+	setScenery( object: THREE.Object3D, options: AddOptions | null ): void {
+
+		this.volume.remove( object );
+		this.trilinear?.remove( object );
+		if ( options ) { this.scenery.set( object, options ); this.activeVolume.add( object, options ); } else this.scenery.delete( object );
 
 	}
 
@@ -473,7 +488,7 @@ export class DemoApp {
 		this.moveDynamicObjects( delta );
 		const volume = this.activeVolume;
 		volume.update();
-		for ( const object of this.dynamicObjects ) {
+		for ( const object of [ ...this.dynamicObjects, ...this.scenery.keys() ] ) {
 
 			const uniforms = volume.getUniforms( object );
 			if ( ! uniforms ) continue;
