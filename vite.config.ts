@@ -19,7 +19,7 @@ export default defineConfig( {
 		outDir: resolve( root, 'dist-examples' ),
 		emptyOutDir: true,
 		rollupOptions: {
-			input: Object.fromEntries( [ 'index', 'basic', 'sponza', 'sibenik', 'kyoto' ]
+			input: Object.fromEntries( [ 'index', 'basic', 'sponza', 'sibenik', 'kyoto', 'tworooms' ]
 				.map( ( name ) => [ name, resolve( root, `examples/${name}.html` ) ] )
 				.filter( ( [ , path ] ) => existsSync( path ) ) ),
 		},

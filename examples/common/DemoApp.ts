@@ -64,7 +64,7 @@ export interface DemoReport {
  * (no panel, no stats), `probes=0` (hide the probe markers), `drop=name,name` (leave out the
  * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
  * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`, `guard=1` (visibility
- * guard on), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`,
+ * guard on), `zones=1` (the layout's lighting zones), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`,
  * `bounces=n` (capture again n times with the static scene lit by the probes).
  */
 export class DemoApp {
@@ -92,6 +92,8 @@ export class DemoApp {
 		edit: false,
 		/** Visibility guard: probes an object cannot see (through static geometry) do not light it. */
 		guard: false,
+		/** Lighting zones from the layout (when it has them): each its own tetrahedralization. */
+		zones: false,
 		/** Outside the probes' hull: outer cells (continuous fade-out) or the nearest hull point (the old rule). */
 		outside: 'outer cells' as 'outer cells' | 'nearest face',
 		/** De-ringing window strength applied to each captured probe (0 = none). */
@@ -137,6 +139,7 @@ export class DemoApp {
 		this.params.resolution = Number( this.query.get( 'resolution' ) ?? 32 );
 		this.params.showProbes = this.query.get( 'probes' ) !== '0';
 		this.params.guard = this.query.get( 'guard' ) === '1';
+		this.params.zones = this.query.get( 'zones' ) === '1';
 		this.params.outside = this.query.get( 'outside' ) === 'nearest' ? 'nearest face' : 'outer cells';
 		this.params.deringing = Number( this.query.get( 'deringing' ) ?? 0 );
 		this.params.nonNegative = this.query.get( 'nonnegative' ) === '1';
@@ -278,7 +281,8 @@ export class DemoApp {
 		const layout = this.layout;
 		for ( const object of [ ...this.dynamicObjects, ...this.scenery.keys() ] ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
 		const interpolator = createProbeInterpolator( layout.positions, { outside: this.params.outside === 'nearest face' ? 'nearestFace' : 'outerCells' } );
-		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator } );
+		const zones = this.params.zones ? layout.zones?.map( ( { name, probes, bounds: { min, max } } ) => ( { name, probes, bounds: { min: { x: min[ 0 ], y: min[ 1 ], z: min[ 2 ] }, max: { x: max[ 0 ], y: max[ 1 ], z: max[ 2 ] } } } ) ) : undefined;
+		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator, zones } );
 		this.trilinear = null;
 		if ( layout.grid ) {
 
@@ -417,6 +421,7 @@ export class DemoApp {
 		const beyond = gui.addFolder( 'beyond the paper' );
 		beyond.add( p, 'outside', [ 'outer cells', 'nearest face' ] ).name( 'outside the hull' ).onChange( () => this.rebuildVolume( this.volume.sh ) );
 		beyond.add( p, 'guard' ).name( 'no light through walls' ).onChange( () => this.applyGuard() );
+		if ( this.layouts.some( ( layout ) => layout.zones ) ) beyond.add( p, 'zones' ).name( 'lighting zones' ).onChange( () => this.rebuildVolume( this.volume.sh ) );
 		beyond.add( p, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( () => this.recapture() );
 		beyond.add( p, 'nonNegative' ).name( 'irradiance never negative' ).onChange( () => this.recapture() );
 		beyond.add( p, 'bounces', 0, 3, 1 ).name( 'diffuse bounces' ).onFinishChange( () => this.recapture() );
@@ -656,6 +661,7 @@ export class DemoApp {
 			layout.names?.splice( index, 1 );
 			layout.roles?.splice( index, 1 );
 			delete layout.grid;
+			delete layout.zones; // its probe indices shifted
 			this.rebuildVolume( sh );
 			this.updateMarkers();
 
