@@ -50,7 +50,16 @@ export type { VisibilityGuardOptions } from './runtime/VisibilityGuard.js';
 export { ProbeZones } from './runtime/ProbeZones.js';
 export type { ProbeZoneDefinition, ProbeZone, BoxLike } from './runtime/ProbeZones.js';
 export { patchMaterial, unpatchMaterial, getProbeVolumeUniforms } from './runtime/patchMaterial.js';
-export type { PatchMaterialOptions, ProbeVolumeUniforms } from './runtime/patchMaterial.js';
+export type { PatchMaterialOptions, ProbeVolumeUniforms, ProbeVolumeSource } from './runtime/patchMaterial.js';
+// Large objects. `toLightProbeGrid` (three's LightProbeGridWebGL, r186+) is the separate entry
+// 'three-capture-lighting/lightProbeGrid', so this index loads with older three releases too.
+export type { ProbeField } from './runtime/ProbeField.js';
+export { ProbeVertexLighting } from './runtime/ProbeVertexLighting.js';
+export type { ProbeVertexLightingOptions } from './runtime/ProbeVertexLighting.js';
+export { ProbeVolumeTexture } from './runtime/ProbeVolumeTexture.js';
+export type { ProbeVolumeTextureOptions, BoundsLike } from './runtime/ProbeVolumeTexture.js';
+export { ProbeTextureLighting } from './runtime/ProbeTextureLighting.js';
+export type { ProbeTextureLightingOptions } from './runtime/ProbeTextureLighting.js';
 export { placeFromMeshes } from './placement/placeFromMeshes.js';
 export type { PlaceFromMeshesOptions } from './placement/placeFromMeshes.js';
 export { gatherWorldGeometry } from './placement/gatherWorldGeometry.js';
