@@ -50,8 +50,12 @@ const _cubic = new Float64Array( 4 );
  */
 export class OuterCells {
 
-	/** Probe positions, x, y, z per probe (shared with the mesh, not copied). */
-	readonly positions: Float64Array;
+	/**
+	 * Probe positions, x, y, z per probe (shared with the mesh, not copied). An incremental
+	 * `TetrahedralMesh` points it at its new positions array after an edit that changed no hull
+	 * face (the hull vertices' coordinates are then the same).
+	 */
+	positions: Float64Array;
 
 	/** Hull triangles, 3 probe indices each, counter-clockwise seen from outside. */
 	readonly faces: Uint32Array;
@@ -76,7 +80,7 @@ export class OuterCells {
 	 */
 	readonly coefficients: Float64Array;
 
-	/** The hull's size (bounding-box diagonal of the probes): the unit of τ. */
+	/** The hull's size (bounding-box diagonal of the hull vertices, i.e. of the probes): the unit of τ. */
 	readonly scale: number;
 
 	/** Centre of the probes' bounding box (where far queries are pulled towards). */
@@ -95,16 +99,19 @@ export class OuterCells {
 		this.faces = faces;
 		const faceCount = faces.length / 3, p = positions;
 
+		// The bounding box of the hull's vertices is the probes' (extremes are hull vertices), and
+		// ignores positions that are in no face (probes removed from an incremental mesh).
 		let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
-		for ( let i = 0; i < p.length; i += 3 ) {
+		for ( let j = 0; j < faces.length; j ++ ) {
 
-			const x = p[ i ], y = p[ i + 1 ], z = p[ i + 2 ];
+			const i = 3 * faces[ j ], x = p[ i ], y = p[ i + 1 ], z = p[ i + 2 ];
 			if ( x < minX ) minX = x; if ( x > maxX ) maxX = x;
 			if ( y < minY ) minY = y; if ( y > maxY ) maxY = y;
 			if ( z < minZ ) minZ = z; if ( z > maxZ ) maxZ = z;
 
 		}
 
+		if ( faces.length === 0 ) minX = minY = minZ = maxX = maxY = maxZ = 0;
 		this.scale = Math.hypot( maxX - minX, maxY - minY, maxZ - minZ ) || 1;
 		this.center = Float64Array.of( ( minX + maxX ) / 2, ( minY + maxY ) / 2, ( minZ + maxZ ) / 2 );
 
@@ -501,21 +508,37 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 
 	}
 
-	const mobile = new Uint8Array( vertexCount ), target = new Float64Array( normals.length );
+	// The vertices that move this round, as flags and as a list: rounds cost O(hull faces), not
+	// O(probes) (probes inside the hull are never mobile).
+	const mobile = new Uint8Array( vertexCount ), target = new Float64Array( normals.length ), moving = new Int32Array( vertexCount );
+	let movingCount = 0;
 	for ( let round = 0; round < UNTANGLE_ROUNDS; round ++ ) {
 
-		mobile.fill( 0 );
+		for ( let m = 0; m < movingCount; m ++ ) {
+
+			const v = moving[ m ];
+			mobile[ v ] = 0;
+			target[ 3 * v ] = target[ 3 * v + 1 ] = target[ 3 * v + 2 ] = 0;
+
+		}
+
+		movingCount = 0;
 		let count = 0;
 		for ( let f = 0; f < faceCount; f ++ ) {
 
 			if ( ! folds( p, faces, normals, f ) ) continue;
-			mobile[ faces[ 3 * f ] ] = mobile[ faces[ 3 * f + 1 ] ] = mobile[ faces[ 3 * f + 2 ] ] = 1;
+			for ( let k = 0; k < 3; k ++ ) {
+
+				const v = faces[ 3 * f + k ];
+				if ( mobile[ v ] === 0 ) { mobile[ v ] = 1; moving[ movingCount ++ ] = v; }
+
+			}
+
 			count ++;
 
 		}
 
 		if ( count === 0 ) return;
-		target.fill( 0 );
 		for ( let f = 0; f < faceCount; f ++ ) {
 
 			const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
@@ -530,10 +553,9 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 
 		}
 
-		for ( let v = 0; v < vertexCount; v ++ ) {
+		for ( let m = 0; m < movingCount; m ++ ) {
 
-			if ( mobile[ v ] === 0 ) continue;
-			const i = 3 * v;
+			const v = moving[ m ], i = 3 * v;
 			const tl = Math.hypot( target[ i ], target[ i + 1 ], target[ i + 2 ] );
 			if ( tl === 0 ) continue;
 			// Full step, then halves of it, back towards the current normal until steep enough.

@@ -1,6 +1,7 @@
 import { Box3, FloatType, Matrix4, Vector3 as Vector3Class, type Material, type Layers, type Mesh, type Object3D, type SkinnedMesh, type Scene, type Vector3, type WebGLRenderer } from 'three';
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
 import { bakedVolumeFromJSON, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume, type BakedCapture, type BakedCaptureSettings, type BakedVolumeData, type BakedVolumeInput, type BakedVolumeJSON, type EncodeBakedVolumeOptions } from '../io/BakedVolume.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
@@ -105,6 +106,24 @@ export type LightProbeVolumeCaptureOptions = ProbeCaptureSettings & Omit<ProbeCa
 
 };
 
+/** Options of {@link LightProbeVolume.addProbe}. */
+export interface AddProbeOptions {
+
+	/** The new probe's name. Default ''. */
+	name?: string;
+
+	/** The new probe's role. Default `'fill'`. */
+	role?: ProbeRole;
+
+	/**
+	 * Its SH (27 floats), e.g. captured elsewhere; the probe is then not marked dirty. Default: the
+	 * SH interpolated at its position from the probes around it before it was added (so the
+	 * picture does not change until it is captured), and the probe is marked dirty.
+	 */
+	sh?: ArrayLike<number>;
+
+}
+
 /** Options of {@link LightProbeVolume.add}. */
 export interface AddOptions {
 
@@ -197,6 +216,7 @@ interface Lit {
 const MAX_WEIGHTS = 8;
 const _indices = new Uint32Array( MAX_WEIGHTS );
 const _weights = new Float32Array( MAX_WEIGHTS );
+const _sh = new Float32Array( SH_FLOATS );
 /** How many (index, weight) pairs the last `weigh()` wrote. */
 let _count = 0;
 let _warnedInstancing = false;
@@ -221,23 +241,42 @@ let _warnedInstancing = false;
  * (each room blends only its own probes) and a visibility guard (`occluders` /
  * {@link LightProbeVolume.setOccluders}: a probe whose segment to the object passes through
  * static geometry gets weight 0 and the other weights are renormalised).
+ *
+ * Editing (level editors, live tools): {@link LightProbeVolume.moveProbe},
+ * {@link LightProbeVolume.addProbe} and {@link LightProbeVolume.removeProbe} update the
+ * tetrahedralization locally (the first edit turns the interpolator into an incremental
+ * {@link TetrahedralMesh} — one full tetrahedralization — kept from then on), mark the moved or
+ * added probe dirty, and {@link LightProbeVolume.recaptureDirty} captures only those. Probe ids
+ * never shift: a removed probe keeps its slot (position, name, role; SH zeroed) and gets no
+ * weight. `positions` and `sh` are replaced by edits (read them again; old references go stale).
+ * Volumes with zones cannot be edited (create a new volume).
  */
 export class LightProbeVolume {
 
-	/** Probe positions, x, y, z per probe. */
-	readonly positions: Float64Array;
+	/**
+	 * Probe positions, x, y, z per probe (one slot per probe id, removed ones included). Replaced by
+	 * `moveProbe` / `addProbe` / `removeProbe` (a view of the incremental mesh's): read it again
+	 * after an edit.
+	 */
+	positions: Float64Array;
 
-	/** 27 floats per probe (three.js `SphericalHarmonics3` layout); `capture()` fills it. */
-	readonly sh: Float32Array;
+	/**
+	 * 27 floats per probe (three.js `SphericalHarmonics3` layout); `capture()` fills it. Replaced by
+	 * `addProbe` (a view of a capacity-doubling store): read it again after adding a probe.
+	 */
+	sh: Float32Array;
 
-	/** Name per probe ('' when none was given). */
+	/** Name per probe ('' when none was given); `addProbe` appends. */
 	readonly names: string[];
 
-	/** Role per probe. */
+	/** Role per probe; `addProbe` appends. */
 	readonly roles: ProbeRole[];
 
-	/** The tetrahedralization (or planar triangulation, or grid) that turns positions into weights. */
-	readonly interpolator: ProbeInterpolator;
+	/**
+	 * The tetrahedralization (or planar triangulation, or grid) that turns positions into weights.
+	 * The first probe edit replaces a {@link TetrahedralMesh} by an incremental one.
+	 */
+	interpolator: ProbeInterpolator;
 
 	/**
 	 * Capture settings of the last {@link LightProbeVolume.capture} (or those read from a baked
@@ -253,6 +292,10 @@ export class LightProbeVolume {
 
 	private readonly lit: Lit[] = [];
 	private guard: VisibilityGuard | null = null;
+	/** Probes moved or added since they were last captured. */
+	private readonly dirty = new Set<number>();
+	/** Capacity-doubling store behind `sh` once a probe was added (null before). */
+	private shStore: Float32Array | null = null;
 	/** 1 % of the probes' bounding-box diagonal: the default re-test distance of the guard. */
 	private readonly defaultMoveThreshold: number;
 
@@ -378,12 +421,14 @@ export class LightProbeVolume {
 			indices.forEach( ( index ) => {
 
 				if ( ! Number.isInteger( index ) || index < 0 || index >= this.count ) throw new RangeError( `${where}: options.indices holds ${index}, not a probe index (0..${this.count - 1}).` );
+				if ( ! this.isProbeActive( index ) ) throw new RangeError( `${where}: options.indices holds ${index}, a removed probe.` );
 
 			} );
 
 		} else {
 
-			indices = Array.from( { length: this.count }, ( _, i ) => i );
+			indices = [];
+			for ( let i = 0; i < this.count; i ++ ) if ( this.isProbeActive( i ) ) indices.push( i );
 
 		}
 
@@ -431,7 +476,12 @@ export class LightProbeVolume {
 					} );
 					if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
 					else if ( deringing > 0 ) windowSH( captured, deringing, captured );
-					group.forEach( ( index, k ) => this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
+					group.forEach( ( index, k ) => {
+
+						this.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index );
+						this.dirty.delete( index );
+
+					} );
 					done += group.length;
 
 				} finally {
@@ -452,6 +502,171 @@ export class LightProbeVolume {
 		for ( const role of ROLES ) if ( options.roles?.[ role ] ) roles[ role ] = bakedSettings( { ...options, ...options.roles[ role ] } );
 		this.captureSettings = { ...bakedSettings( options ), ...( Object.keys( roles ).length > 0 ? { roles } : {} ) };
 		return this;
+
+	}
+
+	/**
+	 * Captures only the dirty probes (moved or added since their last capture; see
+	 * {@link LightProbeVolume.dirtyProbes}); does nothing when there are none. Same options as
+	 * {@link LightProbeVolume.capture}, without `indices`.
+	 */
+	async recaptureDirty( renderer: WebGLRenderer, scene: Scene, options: Omit<LightProbeVolumeCaptureOptions, 'indices'> = {} ): Promise<this> {
+
+		const indices = this.dirtyProbes();
+		if ( indices.length === 0 ) return this;
+		return this.capture( renderer, scene, { ...options, indices } );
+
+	}
+
+	/**
+	 * The probes moved or added (without `sh`) since their last capture, ascending — e.g.
+	 * `capture( renderer, scene, { indices: volume.dirtyProbes() } )`.
+	 */
+	dirtyProbes(): number[] {
+
+		return Array.from( this.dirty ).sort( ( a, b ) => a - b );
+
+	}
+
+	/** Whether probe id `index` is in use (false for removed probes and out-of-range ids). */
+	isProbeActive( index: number ): boolean {
+
+		const mesh = this.interpolator instanceof TetrahedralMesh && this.interpolator.dynamic !== null ? this.interpolator : null;
+		if ( mesh !== null ) return mesh.isActive( index );
+		return Number.isInteger( index ) && index >= 0 && index < this.count;
+
+	}
+
+	/**
+	 * Moves probe `index` to `position`: the tetrahedralization is updated locally (O(cells
+	 * around the probe), plus O(hull) when the hull changed), and the probe is marked dirty — it
+	 * keeps its SH until {@link LightProbeVolume.recaptureDirty} captures it at its new place.
+	 * Objects keep their walk hints; visibility-guard caches are reset. `positions` is replaced.
+	 * @param position `{ x, y, z }` (e.g. a `Vector3`) or `[ x, y, z ]`.
+	 * @throws Error when the volume has zones or a non-tetrahedral interpolator (coplanar probes,
+	 * a grid); RangeError for a removed or unknown index or a non-finite position;
+	 * `DegenerateInputError` when the probe would coincide with another or make all probes
+	 * coplanar. Nothing changes when it throws.
+	 */
+	moveProbe( index: number, position: Vector3 | { x: number; y: number; z: number } | ArrayLike<number> ): this {
+
+		const where = 'LightProbeVolume.moveProbe';
+		const [ x, y, z ] = readPosition( where, position );
+		this.assertActiveProbe( where, index );
+		const mesh = this.editableMesh( where );
+		mesh.moveProbe( index, x, y, z );
+		this.afterEdit( mesh );
+		this.dirty.add( index );
+		return this;
+
+	}
+
+	/**
+	 * Adds a probe at `position` and returns its id (= the previous `count`; ids never shift). The
+	 * tetrahedralization is updated locally; the probe's SH is `options.sh`, or else the SH
+	 * interpolated at its position from the probes around it (so the picture does not flash black),
+	 * and then it is marked dirty for {@link LightProbeVolume.recaptureDirty}. `positions` and `sh`
+	 * are replaced (earlier references go stale); `names` and `roles` get one more entry.
+	 * @throws as {@link LightProbeVolume.moveProbe}, and RangeError for a bad name, role or sh.
+	 */
+	addProbe( position: Vector3 | { x: number; y: number; z: number } | ArrayLike<number>, options: AddProbeOptions = {} ): number {
+
+		const where = 'LightProbeVolume.addProbe';
+		const [ x, y, z ] = readPosition( where, position );
+		const { name = '', role = 'fill', sh } = options;
+		if ( typeof name !== 'string' ) throw new TypeError( `${where}: options.name must be a string, got ${typeof name}.` );
+		if ( ! ROLES.includes( role ) ) throw new RangeError( `${where}: options.role is "${role}"; expected one of ${ROLES.join( ', ' )}.` );
+		if ( sh !== undefined ) assertSH( where, 'options.sh', sh, 1 );
+		const mesh = this.editableMesh( where );
+		if ( sh === undefined ) {
+
+			// Before the probe exists, so it does not weigh itself (its SH is still zero).
+			mesh.interpolate( x, y, z, _indices, _weights, - 1 );
+			blendSH( _indices, _weights, this.sh, _sh, mesh.weightCount );
+
+		} else {
+
+			_sh.set( sh );
+
+		}
+
+		const index = mesh.addProbe( x, y, z );
+		const total = index + 1;
+		if ( this.shStore === null || this.shStore.length < SH_FLOATS * total ) {
+
+			const store = new Float32Array( SH_FLOATS * Math.max( 16, 2 * total ) );
+			store.set( this.sh );
+			this.shStore = store;
+
+		}
+
+		this.sh = this.shStore.subarray( 0, SH_FLOATS * total );
+		this.sh.set( _sh, SH_FLOATS * index );
+		this.names.push( name );
+		this.roles.push( role );
+		this.afterEdit( mesh );
+		if ( sh === undefined ) this.dirty.add( index );
+		return index;
+
+	}
+
+	/**
+	 * Removes probe `index`: the tetrahedralization is updated locally; the id stays (no other id
+	 * shifts), in no tetrahedron any more, with its SH zeroed and its name and role kept. Needs no
+	 * capture.
+	 * @throws as {@link LightProbeVolume.moveProbe}; `DegenerateInputError` when fewer than 4
+	 * probes, or only coplanar ones, would remain.
+	 */
+	removeProbe( index: number ): this {
+
+		const where = 'LightProbeVolume.removeProbe';
+		this.assertActiveProbe( where, index );
+		const mesh = this.editableMesh( where );
+		mesh.removeProbe( index );
+		this.sh.fill( 0, SH_FLOATS * index, SH_FLOATS * ( index + 1 ) );
+		this.dirty.delete( index );
+		this.afterEdit( mesh );
+		return this;
+
+	}
+
+	private assertActiveProbe( where: string, index: number ): void {
+
+		if ( ! this.isProbeActive( index ) ) throw new RangeError( `${where}: ${index} is not a probe of this volume (0..${this.count - 1}, not removed).` );
+
+	}
+
+	/**
+	 * The incremental mesh edits go through: the volume's own once made incremental, else one built
+	 * now over the current positions (a full tetrahedralization, once).
+	 */
+	private editableMesh( where: string ): TetrahedralMesh {
+
+		if ( this.zones !== null ) throw new Error( `${where}: the volume has lighting zones, whose own tetrahedralizations are not edited; create a new LightProbeVolume with the edited positions.` );
+		const current = this.interpolator;
+		if ( ! ( current instanceof TetrahedralMesh ) ) throw new Error( `${where}: probes can be edited only with a tetrahedral interpolator; this volume's is a ${current.constructor?.name ?? 'custom interpolator'} (coplanar probes, or one passed in); create a new LightProbeVolume with the edited positions.` );
+		if ( current.dynamic !== null ) return current;
+		const mesh = TetrahedralMesh.fromDynamic( new DynamicTetrahedralization( this.positions ), { outside: current.outside } );
+		this.interpolator = mesh;
+		this.positions = mesh.positions;
+		// Cell ids of the old mesh mean nothing in the new one.
+		for ( const entry of this.lit ) if ( entry.zone < 0 ) entry.hint = - 1;
+		return mesh;
+
+	}
+
+	/** After an edit: new positions, hints kept in range (any in-range hint is a valid walk start), guard caches reset. */
+	private afterEdit( mesh: TetrahedralMesh ): void {
+
+		this.positions = mesh.positions;
+		const limit = mesh.cellCount + mesh.hullFaces.length / 3;
+		for ( const entry of this.lit ) {
+
+			if ( entry.zone < 0 && entry.hint >= limit ) entry.hint = - 1;
+			entry.guardValid = false;
+			entry.guardFallback = - 2;
+
+		}
 
 	}
 
@@ -839,6 +1054,16 @@ export class LightProbeVolume {
 		while ( this.lit.length > 0 ) this.remove( this.lit[ this.lit.length - 1 ].object );
 
 	}
+
+}
+
+/** `{ x, y, z }` or `[ x, y, z ]` as three finite numbers. */
+function readPosition( where: string, position: { x: number; y: number; z: number } | ArrayLike<number> ): [ number, number, number ] {
+
+	if ( ! position || typeof position !== 'object' ) throw new TypeError( `${where}: position must be { x, y, z } or [ x, y, z ], got ${position === null ? 'null' : typeof position}.` );
+	const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
+	if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) throw new RangeError( `${where}: position must be three finite numbers, got (${x}, ${y}, ${z}).` );
+	return [ x, y, z ];
 
 }
 
