@@ -14,7 +14,7 @@ export type { TetrahedralEdit } from './tetrahedra/DynamicTetrahedralization.js'
 
 export type { ProbeInterpolator } from './interpolation/ProbeInterpolator.js';
 export { TetrahedralMesh } from './interpolation/TetrahedralMesh.js';
-export type { OutsideMode, TetrahedralMeshOptions, FromTetrahedralizationOptions } from './interpolation/TetrahedralMesh.js';
+export type { OutsideMode, TetrahedralMeshOptions, FromTetrahedralizationOptions, FromDynamicOptions } from './interpolation/TetrahedralMesh.js';
 export { OuterCells } from './interpolation/OuterCells.js';
 export { GridInterpolator } from './interpolation/GridInterpolator.js';
 export { PlanarMesh } from './interpolation/PlanarMesh.js';
@@ -44,7 +44,7 @@ export { projectEquirectToSHGPU } from './capture/projectEquirectToSHGPU.js';
 export { captureBounces } from './capture/captureBounces.js';
 export type { CaptureBouncesOptions, CaptureBouncesResult, BouncePass } from './capture/captureBounces.js';
 export { LightProbeVolume } from './runtime/LightProbeVolume.js';
-export type { LightProbeVolumeParameters, LightProbeVolumeCaptureOptions, AddOptions, ProbeRole, ProbeOccluders, SampleOptions } from './runtime/LightProbeVolume.js';
+export type { LightProbeVolumeParameters, LightProbeVolumeCaptureOptions, AddOptions, ProbeRole, ProbeOccluders, SampleOptions, AddProbeOptions } from './runtime/LightProbeVolume.js';
 export { VisibilityGuard } from './runtime/VisibilityGuard.js';
 export type { VisibilityGuardOptions } from './runtime/VisibilityGuard.js';
 export { ProbeZones } from './runtime/ProbeZones.js';

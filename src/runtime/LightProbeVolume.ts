@@ -673,13 +673,38 @@ export class LightProbeVolume {
 	/**
 	 * Everything a baked file holds: positions, SH, the tetrahedralization (when the interpolator
 	 * is a {@link TetrahedralMesh}, so loading needs no re-tetrahedralization), names, roles, zones,
-	 * bounds, capture settings and metadata. The arrays are the volume's own, not copies.
+	 * bounds, capture settings and metadata. The arrays are the volume's own, not copies — except
+	 * after `removeProbe()`, when the live probes are renumbered into new arrays.
 	 */
 	toBakedData(): BakedVolumeInput {
 
 		const mesh = this.interpolator instanceof TetrahedralMesh ? this.interpolator : null;
+		const count = this.count;
+		let active = 0;
+		for ( let i = 0; i < count; i ++ ) if ( this.isProbeActive( i ) ) active ++;
+		if ( mesh && active < count ) {
+
+			// Probes removed by removeProbe() leave empty id slots: the file holds the live probes
+			// only, renumbered in order (tetrahedron ids and neighbour links do not change).
+			const id = new Int32Array( count ).fill( - 1 ), keep: number[] = [];
+			for ( let i = 0; i < count; i ++ ) if ( this.isProbeActive( i ) ) { id[ i ] = keep.length; keep.push( i ); }
+			const positions = new Float64Array( 3 * active ), sh = new Float32Array( SH_FLOATS * active );
+			keep.forEach( ( i, k ) => {
+
+				positions.set( this.positions.subarray( 3 * i, 3 * i + 3 ), 3 * k );
+				sh.set( this.sh.subarray( SH_FLOATS * i, SH_FLOATS * ( i + 1 ) ), SH_FLOATS * k );
+
+			} );
+			return {
+				positions, sh, names: keep.map( ( i ) => this.names[ i ] ), roles: keep.map( ( i ) => this.roles[ i ] ),
+				tetrahedra: mesh.tetrahedra.map( ( v ) => id[ v ] ), neighbors: mesh.neighbors,
+				capture: this.captureSettings, metadata: this.metadata,
+			};
+
+		}
+
 		return {
-			positions: this.positions, sh: this.sh, names: this.names, roles: this.roles,
+			positions: this.positions.subarray( 0, 3 * count ), sh: this.sh.subarray( 0, SH_FLOATS * count ), names: this.names, roles: this.roles,
 			tetrahedra: mesh?.tetrahedra, neighbors: mesh?.neighbors,
 			zones: this.zones?.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: zone.bounds } ) ),
 			capture: this.captureSettings, metadata: this.metadata,

@@ -130,3 +130,35 @@ describe( 'LightProbeVolume baked files', () => {
 	} );
 
 } );
+
+describe( 'LightProbeVolume baked files after incremental edits', () => {
+
+	it( 'removed probes are left out (live probes renumbered), and the loaded volume lights objects as the edited one', () => {
+
+		const volume = randomVolume( 40, 6 );
+		// Zones cannot follow edits: a volume without them.
+		const plain = new LightProbeVolume( { positions: volume.positions, sh: volume.sh, names: volume.names, roles: volume.roles } );
+		plain.removeProbe( 3 );
+		plain.moveProbe( 10, [ 5, 5, 5 ] );
+		plain.removeProbe( 17 );
+		const added = plain.addProbe( [ 1, 2, 3 ], { name: 'new', sh: new Float32Array( 27 ).fill( 0.5 ) } );
+		const loaded = LightProbeVolume.fromArrayBuffer( plain.toArrayBuffer() );
+		expect( loaded.count ).toBe( 39 );
+		expect( loaded.names ).not.toContain( 'probe 3' );
+		expect( loaded.names ).not.toContain( 'probe 17' );
+		expect( loaded.names.at( - 1 ) ).toBe( 'new' );
+		expect( added ).toBe( 40 );
+		const random = mulberry32( 7 );
+		const a = new Float32Array( 27 ), b = new Float32Array( 27 );
+		for ( let k = 0; k < 200; k ++ ) {
+
+			const p = [ 12 * random() - 1, 12 * random() - 1, 12 * random() - 1 ];
+			plain.sample( p, a );
+			loaded.sample( p, b );
+			for ( let j = 0; j < 27; j ++ ) expect( b[ j ] ).toBeCloseTo( a[ j ], 6 );
+
+		}
+
+	} );
+
+} );
