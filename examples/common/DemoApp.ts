@@ -605,25 +605,41 @@ export class DemoApp {
 
 	}
 
-	/** After a drag: the tetrahedralization is rebuilt and the moved probe alone is captured again. */
+	/**
+	 * Whether probe edits can update the volume in place (`moveProbe` / `addProbe`: the
+	 * tetrahedralization changes locally, only the edited probe is captured again). A grid layout's
+	 * first edit and volumes with zones are rebuilt instead.
+	 */
+	private get editsInPlace(): boolean {
+
+		return ! this.layout.grid && ! this.volume.zones;
+
+	}
+
+	/** After a drag: the moved probe's cells are updated and the probe alone is captured again. */
 	private async moveSelectedProbe(): Promise<void> {
 
 		const index = this.selected;
 		const marker = this.markers.children.find( ( m ) => m.userData.probe === index );
 		if ( index < 0 || ! marker ) return;
-		const positions = this.layout.positions;
-		const previous = positions.slice( 3 * index, 3 * index + 3 );
-		marker.position.toArray( positions, 3 * index );
-		delete this.layout.grid; // no longer a regular grid
+		const positions = this.layout.positions, inPlace = this.editsInPlace;
 		try {
 
-			this.rebuildVolume( this.volume.sh.slice() );
+			if ( inPlace ) this.volume.moveProbe( index, marker.position );
+			const previous = positions.slice( 3 * index, 3 * index + 3 );
+			marker.position.toArray( positions, 3 * index );
+			if ( ! inPlace ) {
+
+				delete this.layout.grid; // no longer a regular grid
+				try { this.rebuildVolume( this.volume.sh.slice() ); } catch ( error ) { positions.splice( 3 * index, 3, ...previous ); this.rebuildVolume( this.volume.sh.slice() ); throw error; }
+
+			}
 
 		} catch ( error ) {
 
-			positions.splice( 3 * index, 3, ...previous );
 			this.overlay.notice( `Cannot move the probe there: ${( error as Error ).message}` );
-			this.rebuildVolume( this.volume.sh.slice() );
+			marker.position.fromArray( positions, 3 * index );
+			return;
 
 		}
 
@@ -634,16 +650,28 @@ export class DemoApp {
 
 	private async addProbe(): Promise<void> {
 
-		const layout = this.layout;
-		const sh = new Float32Array( this.volume.sh.length + 27 );
-		sh.set( this.volume.sh );
-		layout.positions.push( ...this.controls.target.toArray() );
-		layout.names?.push( `probe ${layout.positions.length / 3}` );
-		layout.roles?.push( 'fill' );
-		delete layout.grid;
-		this.rebuildVolume( sh );
-		await this.recapture( [ this.volume.count - 1 ] );
-		this.select( this.volume.count - 1 );
+		const layout = this.layout, name = `probe ${layout.positions.length / 3 + 1}`, inPlace = this.editsInPlace;
+		let index: number;
+		if ( inPlace ) {
+
+			index = this.volume.addProbe( this.controls.target, { name, role: 'fill' } );
+
+		} else {
+
+			const sh = new Float32Array( this.volume.sh.length + 27 );
+			sh.set( this.volume.sh );
+			delete layout.grid;
+			layout.positions.push( ...this.controls.target.toArray() );
+			layout.names?.push( name );
+			layout.roles?.push( 'fill' );
+			this.rebuildVolume( sh );
+			index = this.volume.count - 1;
+
+		}
+
+		if ( inPlace ) { layout.positions.push( ...this.controls.target.toArray() ); layout.names?.push( name ); layout.roles?.push( 'fill' ); }
+		await this.recapture( [ index ] );
+		this.select( index );
 
 	}
 

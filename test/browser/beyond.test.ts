@@ -105,6 +105,33 @@ describe.skipIf( browserSkipReason !== '' )( `demo toggles beyond the paper, in 
 
 	} );
 
+	it( 'basic: dragging a probe updates the tetrahedralization in place and captures that probe alone; adding one too', async () => {
+
+		const { page, demo } = await openDemo( session, `examples/basic.html?${FIXED}&t=4` );
+		expect( demo.error ).toBe( '' );
+		const result = await page.evaluate( `( async () => {
+			const app = window.__demoApp, before = app.volume.positions[ 6 ], counts = [];
+			app.params.edit = true;
+			app.select( 2 );
+			app.markers.children.find( ( m ) => m.userData.probe === 2 ).position.x += 0.2;
+			const capture = app.volume.capture.bind( app.volume );
+			app.volume.capture = ( r, s, o ) => { counts.push( o.indices ? o.indices.length : app.volume.count ); return capture( r, s, o ); };
+			await app.moveSelectedProbe();
+			const moved = app.volume.positions[ 6 ] - before, incremental = app.volume.interpolator.dynamic != null;
+			const probes = app.volume.count;
+			await app.addProbe();
+			return { moved, incremental, counts, probes, after: app.volume.count, cells: app.volume.interpolator.cellCount, error: window.__demo.error };
+		} )()` ) as { moved: number; incremental: boolean; counts: number[]; probes: number; after: number; cells: number; error: string };
+		await page.close();
+		expect( result.error ).toBe( '' );
+		expect( result.moved ).toBeCloseTo( 0.2, 6 );
+		expect( result.incremental ).toBe( true );
+		expect( result.counts ).toEqual( [ 1, 1 ] ); // the moved probe, then the added one
+		expect( result.after ).toBe( result.probes + 1 );
+		expect( result.cells ).toBeGreaterThan( 0 );
+
+	} );
+
 	it( 'two rooms: the probe light at a point in the blue room 0.5 m from the wall holds red from the other room; with zones or the guard toggled on, none', async () => {
 
 		// What the page's volume hands an object there (volume.sample: the same zone and guard logic
