@@ -152,7 +152,7 @@ export class TriangleBVH {
 		while ( top > 0 ) {
 
 			const node = stack[ -- top ];
-			if ( ! rayHitsBox( bounds, 6 * node, ox, oy, oz, ix, iy, iz ) ) continue;
+			if ( ! hitsBox( bounds, 6 * node, ox, oy, oz, ix, iy, iz, Infinity ) ) continue;
 			const count = counts[ node ];
 			if ( count > 0 ) {
 
@@ -268,14 +268,15 @@ export class TriangleBVH {
 }
 
 /**
- * Slab test of the ray o + t · d, t ≥ 0, against the box at `bounds[b …]`. With a zero direction
- * component the reciprocal is ±Infinity: (min − o) · ±Infinity is NaN only when o lies exactly on
- * that slab's plane, which the comparisons below treat as inside the slab, and ±Infinity for both
- * ends when o is outside it, which empties the interval.
+ * Slab test of o + t · d, t ∈ [0, tMax] (a ray with tMax = Infinity, a segment with d = b − a and
+ * tMax = 1), against the box at `bounds[b …]`, given the reciprocal direction i = 1 / d. With a
+ * zero direction component the reciprocal is ±Infinity: (min − o) · ±Infinity is NaN only when o
+ * lies exactly on that slab's plane, which the comparisons below treat as inside the slab, and
+ * ±Infinity for both ends when o is outside it, which empties the interval.
  */
-function rayHitsBox( bounds: Float64Array, b: number, ox: number, oy: number, oz: number, ix: number, iy: number, iz: number ): boolean {
+export function hitsBox( bounds: Float64Array, b: number, ox: number, oy: number, oz: number, ix: number, iy: number, iz: number, tMax: number ): boolean {
 
-	let near = 0, far = Infinity;
+	let near = 0, far = tMax;
 	let t0 = ( bounds[ b ] - ox ) * ix, t1 = ( bounds[ b + 3 ] - ox ) * ix;
 	if ( t0 > t1 ) { const s = t0; t0 = t1; t1 = s; }
 	if ( t0 > near ) near = t0;

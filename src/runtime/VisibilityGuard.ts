@@ -1,5 +1,5 @@
 import type { Object3D } from 'three';
-import { TriangleBVH } from '../placement/TriangleBVH.js';
+import { TriangleBVH, hitsBox } from '../placement/TriangleBVH.js';
 import { gatherWorldGeometry } from '../placement/gatherWorldGeometry.js';
 import { intersectRayTriangle } from '../placement/intersectRayTriangle.js';
 import { assertArrayLike, assertNumber } from '../validate.js';
@@ -118,14 +118,14 @@ export class VisibilityGuard {
 		while ( top > 0 ) {
 
 			const node = stack[ -- top ];
-			if ( ! segmentHitsBox( bounds, 6 * node, ax, ay, az, ix, iy, iz ) ) continue;
+			if ( ! hitsBox( bounds, 6 * node, ax, ay, az, ix, iy, iz, 1 ) ) continue;
 			const count = counts[ node ];
 			if ( count > 0 ) {
 
 				for ( let i = right[ node ], end = i + count; i < end; i ++ ) {
 
 					const triangle = order[ i ];
-					if ( ! segmentHitsBox( triangleBounds, 6 * triangle, ax, ay, az, ix, iy, iz ) ) continue;
+					if ( ! hitsBox( triangleBounds, 6 * triangle, ax, ay, az, ix, iy, iz, 1 ) ) continue;
 					// d = b − a, so the hit parameter is the fraction of the segment.
 					const t = intersectRayTriangle( tri, triangle, ax, ay, az, dx, dy, dz );
 					if ( t > END_EPSILON && t < 1 - END_EPSILON ) return true;
@@ -313,28 +313,5 @@ function toBVH( occluders: TriangleBVH | ArrayLike<number> | Object3D | readonly
 	}
 
 	return new TriangleBVH( occluders as ArrayLike<number> );
-
-}
-
-/**
- * Slab test of the segment a + t · (b − a), t ∈ [0, 1], against the box at `bounds[b …]`, with the
- * reciprocal direction; zero components behave as in TriangleBVH's ray test (±Infinity).
- */
-function segmentHitsBox( bounds: Float64Array, b: number, ox: number, oy: number, oz: number, ix: number, iy: number, iz: number ): boolean {
-
-	let near = 0, far = 1;
-	let t0 = ( bounds[ b ] - ox ) * ix, t1 = ( bounds[ b + 3 ] - ox ) * ix;
-	if ( t0 > t1 ) { const s = t0; t0 = t1; t1 = s; }
-	if ( t0 > near ) near = t0;
-	if ( t1 < far ) far = t1;
-	t0 = ( bounds[ b + 1 ] - oy ) * iy; t1 = ( bounds[ b + 4 ] - oy ) * iy;
-	if ( t0 > t1 ) { const s = t0; t0 = t1; t1 = s; }
-	if ( t0 > near ) near = t0;
-	if ( t1 < far ) far = t1;
-	t0 = ( bounds[ b + 2 ] - oz ) * iz; t1 = ( bounds[ b + 5 ] - oz ) * iz;
-	if ( t0 > t1 ) { const s = t0; t0 = t1; t1 = s; }
-	if ( t0 > near ) near = t0;
-	if ( t1 < far ) far = t1;
-	return near <= far;
 
 }
