@@ -15,6 +15,7 @@ export const title = 'Probe lookup, 10,000 moving objects (M queries/s, higher i
 export const notes = [
 	'One query = locate + barycentric + blendSH (27 floats from 4 probes), locate alone, or the per-frame API interpolate() (locate + clamped weights) + blendSH, where marked. Coherent: each object follows a smooth Lissajous path, moving about 0.4 % of the box per frame, and its hint is the tetrahedron it was in last frame; no hint: every walk starts at tetrahedron 0.',
 	'Each figure: queries / time of the timed loop, frames repeated until ≥ 0.5 s; median, min, max of 3 such measurements, one core. Target (printed, not asserted): ≥ 5 M/s with hints.',
+	'Peer: the regular-grid lookup that three\'s LightProbeGrid and the paper\'s baseline use — GridInterpolator.interpolate (trilinear, 8 probes) + a one-pass blend of the 8 probes\' SH written out in the bench (blendSH\'s general 8-probe loop is several times slower than its 4-probe fast path, which would flatter ours), on the same moving objects: the 12×6×6 grid itself, and for the random probes a 10×10×10 grid (1,000 probes) over the same box. Ratio: ours ÷ peer in M queries/s (above 1: ours answers more queries per second).',
 ];
 
 const OBJECTS = 10_000;
@@ -23,7 +24,7 @@ const REPEATS = 3;
 const TARGET = 5; // M queries/s, coherent, with hints
 
 /** What one query does: locate alone, locate + barycentric + blendSH, or interpolate() + blendSH. */
-type Query = 'locate' | 'blend' | 'interpolate';
+type Query = 'locate' | 'blend' | 'interpolate' | 'grid';
 type Mode = { subject: string, hinted: boolean, query: Query, target: boolean };
 
 const MODES: Mode[] = [
@@ -31,27 +32,53 @@ const MODES: Mode[] = [
 	{ subject: 'ours, coherent, locate only', hinted: true, query: 'locate', target: false },
 	{ subject: 'ours, coherent, interpolate() + blendSH', hinted: true, query: 'interpolate', target: false },
 	{ subject: 'ours, no hint (0)', hinted: false, query: 'blend', target: false },
+	{ subject: 'peer: trilinear grid, interpolate() + one-pass blend of 8', hinted: false, query: 'grid', target: false },
 ];
+
+interface Grid {
+	positions: Float64Array;
+	interpolate( x: number, y: number, z: number, indices: Uint32Array, weights: Float32Array ): number;
+}
+type GridClass = new ( min: ArrayLike<number>, max: ArrayLike<number>, counts: ArrayLike<number> ) => Grid;
 
 export async function run( log: ( message: string ) => void ): Promise<BenchRow[]> {
 
 	const meshes = [
-		{ name: '1k random probes', points: randomPoints( 'probes', 1000, 11 ).points },
-		{ name: 'grid 12x6x6 probes', points: gridPoints( 'probes', 12, 6, 6 ).points },
+		{ name: '1k random probes', points: randomPoints( 'probes', 1000, 11 ).points, gridCounts: [ 10, 10, 10 ] },
+		{ name: 'grid 12x6x6 probes', points: gridPoints( 'probes', 12, 6, 6 ).points, gridCounts: [ 12, 6, 6 ] },
 	];
+	const Grid = ( ( await loadOurs() ).api as { GridInterpolator?: GridClass } ).GridInterpolator;
 
 	const ours = await loadOurs();
 	const missing = whyMissing( ours, [ 'TetrahedralMesh', 'blendSH' ] );
 	const rows: BenchRow[] = [];
 
-	for ( const { name, points } of meshes ) {
+	for ( const { name, points, gridCounts } of meshes ) {
 
+		const caseRows: BenchRow[] = [];
 		for ( const mode of MODES ) {
 
 			const row: BenchRow = { case: name, subject: mode.subject, unit: 'M queries/s', median: null, min: null, max: null, runs: 0 };
 			const target: Target = { text: `≥ ${TARGET} M/s` };
 			if ( mode.target ) row.targets = [ target ];
-			rows.push( row );
+			caseRows.push( row );
+			if ( mode.query === 'grid' ) {
+
+				if ( ! Grid ) {
+
+					row.status = 'not available: src/index.ts does not export GridInterpolator';
+					continue;
+
+				}
+
+				row.subject += ` (${gridCounts.join( '×' )} grid)`;
+				log( `${name}: ${row.subject} …` );
+				const { rates } = measureGrid( Grid, points, gridCounts );
+				Object.assign( row, summarize( rates ), { output: `${gridCounts.reduce( ( a, b ) => a * b ).toLocaleString( 'en-US' )} probes` } );
+				continue;
+
+			}
+
 			if ( missing || ( mode.query === 'interpolate' && ! ours.api.TetrahedralMesh?.prototype.interpolate ) ) {
 
 				row.status = missing ?? 'not available: TetrahedralMesh has no interpolate()';
@@ -73,6 +100,16 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 			}
 
 		}
+
+		// Ours ÷ the grid peer (throughput: above 1, ours is faster).
+		const peer = caseRows[ caseRows.length - 1 ];
+		for ( const row of caseRows.slice( 0, - 1 ) ) {
+
+			if ( row.median !== null && peer.median !== null ) Object.assign( row, { peer: 'trilinear grid', ratio: row.median / peer.median } );
+
+		}
+
+		rows.push( ...caseRows );
 
 	}
 
@@ -167,6 +204,72 @@ function measure( api: OurApi, probes: Float64Array, mode: Mode ): { rates: numb
 
 	if ( ! Number.isFinite( state.checksum ) ) throw new Error( 'blendSH produced a non-finite value' );
 	return { rates, located: located / queries, tetrahedra: mesh.tetrahedra.length / 4 };
+
+}
+
+/** The grid peer: a trilinear GridInterpolator over the probes' box, same objects, same loop shape. */
+function measureGrid( Grid: GridClass, probes: Float64Array, counts: number[] ): { rates: number[] } {
+
+	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
+	for ( let i = 0; i < probes.length; i ++ ) {
+
+		min[ i % 3 ] = Math.min( min[ i % 3 ], probes[ i ] );
+		max[ i % 3 ] = Math.max( max[ i % 3 ], probes[ i ] );
+
+	}
+
+	const grid = new Grid( min, max, counts );
+	const random = mulberry32( 7 );
+	const probeSH = new Float32Array( 27 * grid.positions.length / 3 ).map( () => random() );
+	const objects = new MovingObjects( probes );
+	const indices = new Uint32Array( 8 ), weights = new Float32Array( 8 ), out = new Float32Array( 27 );
+	let frame = 0, checksum = 0;
+	const rates: number[] = [];
+	for ( let repeat = 0; repeat < REPEATS; repeat ++ ) {
+
+		let elapsed = 0, count = 0;
+		while ( elapsed < MIN_MS ) {
+
+			objects.moveTo( frame ++ );
+			const positions = objects.positions;
+			const start = performance.now();
+			for ( let i = 0; i < OBJECTS; i ++ ) {
+
+				grid.interpolate( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ], indices, weights );
+				blend8( indices, weights, probeSH, out );
+				checksum += out[ 0 ];
+
+			}
+
+			elapsed += performance.now() - start;
+			count += OBJECTS;
+
+		}
+
+		rates.push( count / elapsed / 1000 );
+
+	}
+
+	if ( ! Number.isFinite( checksum ) ) throw new Error( 'grid blendSH produced a non-finite value' );
+	return { rates };
+
+}
+
+/**
+ * The peer's blend: 8 probes' SH in one pass, written out like blendSH's 4-probe fast path, so
+ * that the peer is not slowed by blendSH's general n-probe loop (zero-fill, then += per probe).
+ */
+function blend8( indices: Uint32Array, weights: Float32Array, probeSH: Float32Array, out: Float32Array ): void {
+
+	const w0 = weights[ 0 ], w1 = weights[ 1 ], w2 = weights[ 2 ], w3 = weights[ 3 ], w4 = weights[ 4 ], w5 = weights[ 5 ], w6 = weights[ 6 ], w7 = weights[ 7 ];
+	const b0 = 27 * indices[ 0 ], b1 = 27 * indices[ 1 ], b2 = 27 * indices[ 2 ], b3 = 27 * indices[ 3 ];
+	const b4 = 27 * indices[ 4 ], b5 = 27 * indices[ 5 ], b6 = 27 * indices[ 6 ], b7 = 27 * indices[ 7 ];
+	for ( let i = 0; i < 27; i ++ ) {
+
+		out[ i ] = w0 * probeSH[ b0 + i ] + w1 * probeSH[ b1 + i ] + w2 * probeSH[ b2 + i ] + w3 * probeSH[ b3 + i ]
+			+ w4 * probeSH[ b4 + i ] + w5 * probeSH[ b5 + i ] + w6 * probeSH[ b6 + i ] + w7 * probeSH[ b7 + i ];
+
+	}
 
 }
 

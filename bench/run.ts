@@ -6,9 +6,10 @@
 
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { availableParallelism, cpus, platform, release, totalmem } from 'node:os';
+import { availableParallelism, cpus, loadavg, platform, release, totalmem } from 'node:os';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { cgalVersion } from './cgal.js';
+import { scipyVersions } from './peers/scipyQhull.js';
 import type { BenchModule, BenchRow } from './types.js';
 
 const BENCH_DIR = fileURLToPath( new URL( '.', import.meta.url ) );
@@ -64,6 +65,7 @@ async function main(): Promise<void> {
 	}
 
 	const totalSeconds = ( performance.now() - started ) / 1000;
+	environment.load.end = loadAverage();
 	const stamp = `${environment.date.slice( 0, 16 ).replace( 'T', ' ' )} UTC, ${environment.packages[ 'three-capture-lighting' ]}`;
 	for ( const bench of benches ) bench.measured = stamp;
 
@@ -95,6 +97,8 @@ function describeEnvironment() {
 
 	const cpuInfo = existsSync( '/proc/cpuinfo' ) ? readFileSync( '/proc/cpuinfo', 'utf8' ) : '';
 	const cpu = /^model name\s*:\s*(.+)$/m.exec( cpuInfo )?.[ 1 ] ?? cpus()[ 0 ]?.model ?? 'unknown';
+	const scipy = scipyVersions();
+	const osRelease = existsSync( '/etc/os-release' ) ? /^PRETTY_NAME="?([^"\n]+)"?$/m.exec( readFileSync( '/etc/os-release', 'utf8' ) )?.[ 1 ] : undefined;
 
 	return {
 		date: new Date().toISOString(),
@@ -102,8 +106,10 @@ function describeEnvironment() {
 			cpu,
 			cores: availableParallelism(),
 			memoryGiB: Math.round( totalmem() / 2 ** 30 * 10 ) / 10,
-			os: `${platform()} ${release()}`,
+			os: `${osRelease ? osRelease + ', ' : ''}${platform()} ${release()}`,
 		},
+		/** 1/5/15-minute load averages at the start and the end: other work on the machine distorts the figures. */
+		load: { start: loadAverage(), end: '' },
 		node: process.version,
 		packages: {
 			'three-capture-lighting': packageVersion( ROOT ) + gitRevision(),
@@ -111,8 +117,28 @@ function describeEnvironment() {
 			'delaunay-triangulate': packageVersion( ROOT + 'node_modules/delaunay-triangulate/' ),
 			CGAL: cgalVersion() ?? 'not installed',
 			'g++': command( 'g++', [ '-dumpfullversion' ] ) ?? 'not installed',
+			Chromium: chromiumVersion(),
+			'puppeteer-core': packageVersion( ROOT + 'node_modules/puppeteer-core/' ),
+			gl: packageVersion( ROOT + 'node_modules/gl/' ),
+			python3: command( 'python3', [ '-c', 'import sys; print(sys.version.split()[0])' ] ) ?? 'not installed',
+			SciPy: scipy ? `${scipy.scipy} (NumPy ${scipy.numpy})` : 'not installed',
 		},
 	};
+
+}
+
+function loadAverage(): string {
+
+	return loadavg().map( ( value ) => value.toFixed( 2 ) ).join( ' / ' );
+
+}
+
+/** The browser the Chromium benches drive (CHROMIUM_PATH or /usr/bin/chromium), e.g. `'156.0.8078.79'`. */
+function chromiumVersion(): string {
+
+	const binary = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+	const version = existsSync( binary ) ? command( binary, [ '--version' ] ) : null;
+	return version ? ( /[\d.]+/.exec( version )?.[ 0 ] ?? version ) : 'not installed';
 
 }
 
@@ -162,6 +188,7 @@ function headerMarkdown( environment: ReturnType<typeof describeEnvironment>, fi
 		'',
 		`- Date: ${environment.date}`,
 		`- Machine: ${machine.cpu}, ${machine.cores} cores, ${machine.memoryGiB} GiB, ${machine.os}`,
+		`- Load average (1 / 5 / 15 min): ${environment.load.start} at the start, ${environment.load.end} at the end (on ${machine.cores} cores; above ~1 other work distorts the figures, ratios from one run stay comparable)`,
 		`- Node ${environment.node}; ` + Object.entries( packages ).map( ( [ name, version ] ) => `${name} ${version}` ).join( ', ' ),
 		`- Command: npm run bench${filters.length ? ' -- ' + filters.join( ' ' ) : ''} (${totalSeconds.toFixed( 0 )} s)`,
 		'',
@@ -188,7 +215,7 @@ function benchMarkdown( report: BenchReport ): string {
 			row.runs ? String( row.runs ) : '',
 			row.output ?? '',
 			row.status ?? '',
-			row.ratio !== undefined ? `${row.ratio.toFixed( 2 )}× ${row.peer}` : '',
+			[ ...( row.ratio !== undefined ? [ { peer: row.peer ?? '', ratio: row.ratio } ] : [] ), ...( row.ratios ?? [] ) ].map( ( { peer, ratio } ) => `${formatRatio( ratio )}× ${peer}` ).join( ', ' ),
 			( row.targets ?? [] ).map( ( { text, met } ) => text + ( met === undefined ? '' : met ? ' ✓' : ' ✗' ) ).join( ', ' ),
 		] );
 		lines.push( ...table( header, body ), '' );
@@ -205,6 +232,13 @@ function formatNumber( value: number | null ): string {
 
 	if ( value === null ) return '—';
 	return value >= 100 ? value.toFixed( 0 ) : value >= 10 ? value.toFixed( 1 ) : value.toFixed( 2 );
+
+}
+
+/** Two decimals, or two significant digits below 0.1 (ours ÷ a peer 300 times slower is 0.0033×, not 0.00×). */
+function formatRatio( ratio: number ): string {
+
+	return ratio >= 0.1 || ratio === 0 ? ratio.toFixed( 2 ) : ratio.toPrecision( 2 );
 
 }
 

@@ -1,6 +1,7 @@
 /**
- * Tetrahedralization time on the same points, side by side: ours, CGAL (C++, if installed) and
- * npm delaunay-triangulate (in a child process with a 60 s limit), with cheap checks of ours.
+ * Tetrahedralization time on the same points, side by side: ours, CGAL (C++, if installed),
+ * npm delaunay-triangulate (in a child process with a 60 s limit) and Qhull through SciPy (a
+ * Python child process, only when SciPy is installed), with cheap checks of ours.
  */
 
 import { mkdirSync } from 'node:fs';
@@ -9,13 +10,16 @@ import { allDatasets, boxVolume, pointCount, writePointsFile, type Dataset } fro
 import { orientation, signedVolume } from './geometry.js';
 import { loadOurs, whyMissing, type Tetrahedralization } from './ours.js';
 import { runDelaunayTriangulate } from './peers/delaunayTriangulate.js';
+import { runQhull, scipyVersions } from './peers/scipyQhull.js';
 import { collectGarbage, summarize, timeRuns } from './stats.js';
 import type { BenchRow, Target } from './types.js';
 
 export const title = 'Tetrahedralization (ms, lower is better)';
 
 export const notes = [
-	'ours: median of several runs after warm-up calls (fewer runs for the big sets); CGAL: Delaunay_triangulation_3 with Epick, range insert (spatially sorted), timed inside C++, several runs in one process; delaunay-triangulate: one run in a child process, killed after 60 s, skipped on larger sets once it timed out.',
+	'ours: median of several runs after warm-up calls (fewer runs for the big sets); CGAL: Delaunay_triangulation_3 with Epick, range insert (spatially sorted), timed inside C++, several runs in one process; delaunay-triangulate: one run in a child process, killed after 60 s, skipped on larger sets once it timed out; Qhull: scipy.spatial.Delaunay (default options, Qt triangulated output) in a python3 child process, several runs timed inside Python (file I/O and NumPy conversion excluded), only when SciPy is installed (the bench installs nothing).',
+	'Ratio column: ours ÷ each peer, median over median (below 1: ours is faster).',
+	'Qhull\'s check column: simplices with |volume| ≤ 1e-12 of the box count as flat; Qhull does not orient simplices consistently, so no inverted count. On grids it, like delaunay-triangulate, keeps flat tetrahedra that our output and CGAL\'s must not have.',
 	'ours is checked cheaply: exact orientation of every tetrahedron (none may be flat or inverted), mutual neighbors, volume sum = the grid\'s box (grids) or CGAL\'s hull volume (random sets), and for random sets (unique Delaunay) the same tetrahedron count as CGAL.',
 	'On a grid every cell is split into 5 or 6 tetrahedra, so counts may differ from CGAL on grids while both are valid; CGAL gives 6 per cell (1,650 for 12x6x6).',
 	'Targets are printed, not asserted: random 10k ≤ 250 ms, random 100k ≤ 1.0 s, grid 40³ ≤ 3 s and valid; within 1.5× of CGAL.',
@@ -49,12 +53,27 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 
 	}
 
+	for ( const { dataset, pointsFile, cgalResult, rows } of measured ) rows.push( await qhullRow( dataset, pointsFile, cgalResult, log ) );
+
 	let timedOutAt = Infinity; // point count on which delaunay-triangulate timed out
 	for ( const { dataset, pointsFile, cgalResult, rows } of measured ) {
 
 		const row = await peerRow( dataset, pointsFile, cgalResult, timedOutAt, log );
 		if ( row.status?.startsWith( 'timeout' ) ) timedOutAt = pointCount( dataset );
 		rows.push( row );
+
+	}
+
+	// Ours ÷ the peers other than CGAL (CGAL's ratio is already `ratio`), in the ours row.
+	for ( const { rows } of measured ) {
+
+		const [ oursRow, , ...peers ] = rows;
+		if ( oursRow.median === null ) continue;
+		for ( const peer of peers ) {
+
+			if ( peer.median !== null ) ( oursRow.ratios ??= [] ).push( { peer: peer.subject, ratio: oursRow.median / peer.median } );
+
+		}
 
 	}
 
@@ -82,6 +101,21 @@ async function cgalRun( dataset: Dataset, pointsFile: string, cgal: { binary: st
 		return { row, result: null };
 
 	}
+
+}
+
+/** Qhull via SciPy in a Python child process, several runs; skipped when SciPy is absent. */
+async function qhullRow( dataset: Dataset, pointsFile: string, cgal: CgalResult | null, log: ( message: string ) => void ): Promise<BenchRow> {
+
+	const versions = scipyVersions();
+	const subject = versions ? `Qhull (SciPy ${versions.scipy})` : 'Qhull (SciPy)';
+	const row: BenchRow = { case: dataset.name, subject, unit: 'ms', median: null, min: null, max: null, runs: 0 };
+	if ( versions ) log( `${dataset.name}: Qhull via SciPy (python3 child process) …` );
+	const result = await runQhull( pointsFile, pointCount( dataset ) > 20000 ? 3 : 9 );
+	if ( ! result.ok ) return { ...row, status: result.reason };
+
+	const checks = [ `${result.flat} flat`, ...compareWithHull( dataset, result.tetrahedra, result.volume, cgal ) ];
+	return { ...row, ...summarize( result.seconds.map( ( s ) => s * 1000 ) ), output: tetrahedraLabel( result.tetrahedra, dataset ), status: checks.join( '; ' ) };
 
 }
 

@@ -24,6 +24,8 @@ export interface BenchRow {
 	/** Subject compared against, and median / peer median. */
 	peer?: string;
 	ratio?: number;
+	/** More peers compared against, each with median / its median, printed after `ratio`. */
+	ratios?: { peer: string, ratio: number }[];
 	/** Targets for the figure, printed beside it (never asserted). */
 	targets?: Target[];
 }
