@@ -28,7 +28,7 @@ export interface OurTetrahedralMesh {
 export interface OurApi {
 	tetrahedralize( points: ArrayLike<number> ): Tetrahedralization;
 	TetrahedralMesh: new ( positions: ArrayLike<number> ) => OurTetrahedralMesh;
-	blendSH( indices: ArrayLike<number>, weights: ArrayLike<number>, probeSH: Float32Array, out: Float32Array ): unknown;
+	blendSH( indices: ArrayLike<number>, weights: ArrayLike<number>, probeSH: Float32Array, out: Float32Array, count?: number ): unknown;
 }
 
 export interface Loaded {
