@@ -5,7 +5,10 @@ uniform float probeVolumeIntensity;
 
 vec3 probeVolumeIrradiance( const in vec3 worldNormal ) {
 
-	vec4 n = vec4( worldNormal, 1.0 );
+	// A NaN or infinite normal (normalize of a zero vector: a zero normal, a bump map on a
+	// degenerate triangle) would make the whole probe term NaN; such a point gets the
+	// direction-free part of E instead.
+	vec4 n = vec4( abs( dot( worldNormal, worldNormal ) - 1.0 ) < 0.5 ? worldNormal : vec3( 0.0 ), 1.0 );
 	return probeVolumeIntensity * vec3(
 		dot( n, probeVolumeMatrices[ 0 ] * n ),
 		dot( n, probeVolumeMatrices[ 1 ] * n ),

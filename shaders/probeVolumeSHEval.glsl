@@ -13,7 +13,9 @@ vec3 probeVolumeIrradianceFromPacked( const in vec4 s0, const in vec4 s1, const 
 	vec3 c6 = vec3( s4.zw, s5.x );
 	vec3 c7 = s5.yzw;
 	vec3 c8 = s6.xyz;
-	float x = n.x, y = n.y, z = n.z;
+	// A NaN or infinite normal gets the direction-free part of E (see probeVolumeIrradiance).
+	vec3 m = abs( dot( n, n ) - 1.0 ) < 0.5 ? n : vec3( 0.0 );
+	float x = m.x, y = m.y, z = m.z;
 	vec3 result = c0 * 0.886227;
 	result += c1 * ( 2.0 * 0.511664 * y );
 	result += c2 * ( 2.0 * 0.511664 * z );

@@ -281,6 +281,39 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 
 	} );
 
+	it( 'a mesh with zero normals (normalize → NaN on the GPU) gets the direction-free part of the probe light, not NaN/black — object, vertex SH and texture modes', () => {
+
+		// Probes holding L00 only: E is the same for every normal, so the direction-free fallback
+		// must render what a mesh with proper normals renders.
+		const positions = [ - 12, - 2, - 12, 12, - 2, - 12, - 12, 4, 12, 12, 4, 12, 0, 1, 0, - 12, 4, - 12 ];
+		const sh = new Array( 27 * 6 ).fill( 0 ).map( ( _, k ) => ( k % 27 < 3 ? 1.2 + 0.3 * ( k % 27 ) : 0 ) );
+		const reference = floorMesh();
+		const volume = new LightProbeVolume( { positions, sh } );
+		volume.add( reference );
+		volume.update();
+		const want = pixel( render( reference ), camera, 0, 0 );
+		volume.remove( reference );
+		expect( Math.max( ...want ) ).toBeGreaterThan( 40 );
+		for ( const mode of [ 'object', 'vertex', 'texture' ] as const ) {
+
+			const floor = floorMesh();
+			( floor.geometry.getAttribute( 'normal' ).array as Float32Array ).fill( 0 );
+			volume.add( floor, { mode, vertexOutput: 'sh' } );
+			volume.update();
+			const got = pixel( render( floor ), camera, 0, 0 );
+			// Measured: object mode 152/168/182 against 156/173/188 (black, 0/0/0, before the shaders
+			// guarded the normal). The few percent left are three's own normal-dependent terms (its
+			// energy compensation uses dot( normal, view ), here NaN), not the probe light.
+			for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ), `${mode} mode, channel ${c}` ).toBeLessThanOrEqual( 0.05 * want[ c ] );
+			volume.remove( floor );
+			floor.geometry.dispose();
+
+		}
+
+		reference.geometry.dispose();
+
+	} );
+
 	it( 'two objects in the same mode share one program (texture, vertex irradiance, vertex SH)', () => {
 
 		const volume = fieldVolume();
