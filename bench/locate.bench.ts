@@ -271,7 +271,7 @@ function queryAll( api: OurApi, mesh: OurTetrahedralMesh, positions: Float64Arra
 
 		if ( query === 'interpolate' ) {
 
-			// interpolate() answers outside the hull too (from the nearest hull face): every query counts.
+			// interpolate() answers outside the hull too (outer cells): every query counts.
 			hints[ i ] = mesh.interpolate!( x, y, z, indices, weights, hint );
 			blendSH( indices, weights, probeSH, out );
 			checksum += out[ 0 ];

@@ -168,7 +168,7 @@ function markdown( result: Record<string, unknown> & { passes: PassFigures[]; st
 	}
 
 	lines.push( `Times: the capture column includes the shader compilation of the patched clones in pass 1; warm-up capture (not counted) ${( run.warmUpMs / 1000 ).toFixed( 1 )} s; captureBounces in all ${( run.totalMs / 1000 ).toFixed( 1 )} s; the whole run ${( Number( result.runMs ) / 1000 ).toFixed( 0 )} s.`, '' );
-	lines.push( 'What a pass means: pass k = direct + k bounces of diffuse interreflection, as far as per-vertex sampling of the 39-probe field resolves it (light varies linearly across each triangle; vertices outside the probes\' hull take the nearest hull point\'s weights; the visibility guard and zones are not applied). Bounce light reflects only diffusely (three\'s indirect diffuse term, minus the specular share of a MeshStandardMaterial).', '' );
+	lines.push( 'What a pass means: pass k = direct + k bounces of diffuse interreflection, as far as per-vertex sampling of the 39-probe field resolves it (light varies linearly across each triangle; vertices outside the probes\' hull take the outer cells\' extrapolated weights; the visibility guard is not applied). Bounce light reflects only diffusely (three\'s indirect diffuse term, minus the specular share of a MeshStandardMaterial).', '' );
 	return lines.join( '\n' );
 
 }

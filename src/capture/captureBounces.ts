@@ -31,8 +31,7 @@ export type CaptureBouncesOptions = LightProbeVolumeCaptureOptions & {
 	 * What the static meshes' vertices store during the bounce passes (see
 	 * `ProbeVertexLightingOptions.output`): `'irradiance'` (default, 12 bytes a vertex, normal and
 	 * bump maps do not change the probe light) or `'sh'` (112 bytes a vertex, per-pixel normals).
-	 * In Sibenik (bump-mapped stone) `'sh'` captured NaN in pass 1 and the capture threw; without
-	 * the bump maps it matched `'irradiance'` to 0.1 %.
+	 * In Sibenik (bump-mapped stone) both give the same bounce (+78.6 % in the nave after one pass).
 	 */
 	output?: 'irradiance' | 'sh';
 

@@ -12,6 +12,7 @@ import { ProbeCapturer, type ProbeCaptureOptions, type ProbeCaptureSettings } fr
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
 import { ProbeTextureLighting } from './ProbeTextureLighting.js';
+import type { ProbeField } from './ProbeField.js';
 import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
 import { ProbeZones, type ProbeZoneDefinition } from './ProbeZones.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
@@ -155,7 +156,8 @@ export interface AddOptions {
 	 * - `'texture'`: the field resampled into a 3D SH texture over the object's bounds and read per
 	 *   pixel (see `ProbeTextureLighting`) — for large objects whose tessellation is coarse.
 	 *
-	 * Vertex and texture modes sample the whole volume (not zones, without the visibility guard),
+	 * Vertex and texture modes sample the volume per vertex / texel, each point in the zone whose
+	 * bounds hold it (or the `zone` given), without the visibility guard,
 	 * and their objects stay visible in captures (they are scene, not visitors), their probe light
 	 * switched off meanwhile so probes see them as built; `captureBounces` adds their bounces.
 	 */
@@ -813,13 +815,13 @@ export class LightProbeVolume {
 
 				if ( mode === 'texture' ) {
 
-					entry.large.push( new ProbeTextureLighting( object, this, { intensity: options.intensity, texelSize: options.texelSize, maxResolution: options.maxResolution } ) );
+					entry.large.push( new ProbeTextureLighting( object, this.zonedField( fixedZone ), { intensity: options.intensity, texelSize: options.texelSize, maxResolution: options.maxResolution } ) );
 
 				} else {
 
 					object.traverse( ( child ) => {
 
-						if ( ( child as Mesh ).isMesh === true ) entry.large!.push( new ProbeVertexLighting( child as Mesh, this, { intensity: options.intensity, output: options.vertexOutput } ) );
+						if ( ( child as Mesh ).isMesh === true ) entry.large!.push( new ProbeVertexLighting( child as Mesh, this.zonedField( fixedZone ), { intensity: options.intensity, output: options.vertexOutput } ) );
 
 					} );
 
@@ -972,12 +974,51 @@ export class LightProbeVolume {
 	}
 
 	/**
+	 * The field large objects sample: the whole volume without zones; with zones, each point (a
+	 * vertex, a texel) interpolates the probes of the zone whose bounds hold it — or of `fixedZone`
+	 * — so a floor running under a wall takes each room's light on its side. Not the visibility
+	 * guard: vertices lie on surfaces, whose own triangles would block every segment.
+	 */
+	private zonedField( fixedZone: number ): ProbeField {
+
+		if ( this.zones === null ) return this;
+		const volume = this, zones = this.zones;
+		let lastZone = - 2;
+		const interpolator: ProbeInterpolator = {
+			get probeCount() { return volume.count; },
+			get cellCount() { return volume.interpolator.cellCount; },
+			weightCount: Math.max( volume.interpolator.weightCount, ...zones.zones.map( ( zone ) => zone.interpolator.weightCount ) ),
+			interpolate( x, y, z, indices, weights, hint = - 1 ) {
+
+				const zone = fixedZone >= 0 ? fixedZone : zones.zoneAt( x, y, z );
+				// Cell indices belong to one interpolator: a hint from another zone's would be wrong.
+				if ( zone !== lastZone ) { hint = - 1; lastZone = zone; }
+				hint = volume.weighZone( x, y, z, zone, hint );
+				for ( let k = 0; k < this.weightCount; k ++ ) { indices[ k ] = k < _count ? _indices[ k ] : 0; weights[ k ] = k < _count ? _weights[ k ] : 0; }
+				return hint;
+
+			},
+		};
+		return { interpolator, get sh() { return volume.sh; } };
+
+	}
+
+	/**
 	 * Writes the probes and weights for (x, y, z) into `_indices` / `_weights` (`_count` pairs):
 	 * the zone's interpolator (indices mapped to the volume's probes) or the volume's, then the
 	 * visibility guard. `entry` carries the guard's cache (null: test afresh).
 	 * @returns The interpolator's cell, as the next hint.
 	 */
 	private weigh( x: number, y: number, z: number, zone: number, hint: number, entry: Lit | null ): number {
+
+		hint = this.weighZone( x, y, z, zone, hint );
+		if ( this.guard !== null ) this.applyGuard( this.guard, x, y, z, zone, entry );
+		return hint;
+
+	}
+
+	/** {@link LightProbeVolume.weigh} without the visibility guard: the zone's (or volume's) weights. */
+	private weighZone( x: number, y: number, z: number, zone: number, hint: number ): number {
 
 		if ( zone >= 0 ) {
 
@@ -993,7 +1034,6 @@ export class LightProbeVolume {
 
 		}
 
-		if ( this.guard !== null ) this.applyGuard( this.guard, x, y, z, zone, entry );
 		return hint;
 
 	}

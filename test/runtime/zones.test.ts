@@ -196,6 +196,41 @@ describe( 'LightProbeVolume zones', () => {
 
 	} );
 
+	it( 'large objects (vertex mode) take each vertex\'s zone: a floor under both rooms equals each room\'s own volume vertex by vertex; without zones red crosses the wall', () => {
+
+		const { positions, sh, zones, left, right } = twoZones();
+		// A 6 m strip at y = 1 inside both rooms' probe boxes, vertices every 0.1 m along x.
+		const floor = () => new THREE.Mesh( new THREE.PlaneGeometry( 6, 0.5, 60, 1 ).rotateX( - Math.PI / 2 ).translate( 0, 1, 1 ), new THREE.MeshStandardMaterial() );
+		const lightPerVertex = ( volume: LightProbeVolume ) => {
+
+			const mesh = floor();
+			volume.add( mesh, { mode: 'vertex', vertexOutput: 'sh' } );
+			volume.update();
+			return { data: ( mesh.geometry.getAttribute( 'probeSH0' ) as THREE.InterleavedBufferAttribute ).data.array as Float32Array, position: mesh.geometry.getAttribute( 'position' ) };
+
+		};
+		const zoned = lightPerVertex( new LightProbeVolume( { positions, sh, zones } ) );
+		const plain = lightPerVertex( new LightProbeVolume( { positions, sh } ) );
+		const leftAlone = subVolume( positions, sh, left ), rightAlone = subVolume( positions, sh, right );
+		const expected = new Float32Array( 27 );
+		let leak = 0, checked = 0;
+		for ( let i = 0; i < zoned.position.count; i ++ ) {
+
+			const x = zoned.position.getX( i ), y = zoned.position.getY( i ), z = zoned.position.getZ( i );
+			// Between the zones' bounds (|x| < 0.2) a vertex belongs to no zone: the whole volume.
+			if ( Math.abs( x ) < 0.2 ) continue;
+			( x < 0 ? leftAlone : rightAlone ).sample( [ x, y, z ], expected );
+			for ( let k = 0; k < 27; k ++ ) expect( zoned.data[ 28 * i + k ] ).toBeCloseTo( expected[ k ], 5 );
+			if ( x > 0 ) leak = Math.max( leak, plain.data[ 28 * i ] ); // red right of the wall
+			checked ++;
+
+		}
+
+		expect( checked ).toBeGreaterThan( 100 );
+		expect( leak ).toBeGreaterThan( 0.1 );
+
+	} );
+
 	it( 'bad zones get errors naming LightProbeVolume, the zone and the problem', () => {
 
 		const { positions, sh, zones } = twoZones();
