@@ -1,4 +1,6 @@
 import { createReadStream, existsSync, statSync } from 'node:fs';
+import { createServer as createHttpServer, type Server } from 'node:http';
+import type { AddressInfo } from 'node:net';
 import { basename, dirname, extname, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { IncomingMessage, ServerResponse } from 'node:http';
@@ -28,38 +30,30 @@ export interface BrowserCaptureOptions {
 }
 
 /**
- * Runs the capture in headless Chromium: a Vite dev server serves the bake page (cli/bakePage/,
- * compiled on the fly with the library's sources) and the scene file's folder, as it is on disk,
- * at /__scene/ (and the sky's folder at /__sky/), so an .mtl, .bin or texture next to the scene
- * loads by its relative name.
+ * Runs the capture in headless Chromium. The bake page is served as plain files when `npm run
+ * build` bundled it (dist/cli/page/, what an installed package runs), else by a Vite dev server
+ * that compiles cli/bakePage/ with the library's sources (running from the repository). The scene
+ * file's folder is served as it is on disk at /__scene/ (and the sky's folder at /__sky/), so an
+ * .mtl, .bin or texture next to the scene loads by its relative name.
  * @param request Everything but the URLs, which are filled in here.
  * @throws {CliError} exit code 2 when Chromium is missing; 1 when the page fails (its message included).
  */
 export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 'sky'> & { sky: { color: [ number, number, number ] } | null }, options: BrowserCaptureOptions ): Promise<BakeResult> {
 
 	if ( ! existsSync( options.browser ) ) throw new CliError( `Chromium not found at ${options.browser}; install it (apt install chromium) or pass --browser <path> (or set CHROME_PATH).` );
-	const root = findRoot();
 	const sceneFolder = dirname( resolve( options.scene ) );
 	const skyFolder = options.skyFile ? dirname( resolve( options.skyFile ) ) : null;
 
-	const { createServer } = await import( 'vite' );
-	const { default: puppeteer } = await import( 'puppeteer-core' );
-	const server: ViteDevServer = await createServer( {
-		configFile: false,
-		root,
-		logLevel: 'error',
-		plugins: [ folderPlugin( '/__scene', sceneFolder ), ...( skyFolder ? [ folderPlugin( '/__sky', skyFolder ) ] : [] ) ],
-		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
-		// No watching or HMR: an edit elsewhere must not reload the page mid-bake.
-		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null },
-		optimizeDeps: { noDiscovery: true, include: [] },
-	} );
+	const puppeteer = await importPuppeteer();
+	const folders: [ string, string ][] = [ [ '/__scene', sceneFolder ], ...( skyFolder ? [ [ '/__sky', skyFolder ] as [ string, string ] ] : [] ) ];
+	const prebuilt = findPrebuiltPage();
+	const server = prebuilt ? await startStaticServer( [ ...folders, [ '/__page', prebuilt ] ] ) : await startViteServer( findRoot(), folders );
+	const pagePath = prebuilt ? '__page/index.html' : 'cli/bakePage/index.html';
 
 	let browser: Browser | null = null;
 	try {
 
-		await server.listen();
-		const baseUrl = server.resolvedUrls!.local[ 0 ];
+		const baseUrl = server.baseUrl;
 		try {
 
 			browser = await puppeteer.launch( { executablePath: options.browser, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 24 * 3_600_000 } );
@@ -75,7 +69,7 @@ export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 
 		page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
 		page.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
 		await page.exposeFunction( PROGRESS_FUNCTION, ( stage: string, done: number, total: number ) => options.onProgress?.( stage, done, total ) );
-		await page.goto( baseUrl + 'cli/bakePage/index.html', { waitUntil: 'load' } );
+		await page.goto( baseUrl + pagePath, { waitUntil: 'load' } );
 		await page.waitForFunction( () => ( window as unknown as { bakeReady?: boolean } ).bakeReady === true, { timeout: 120_000 } ).catch( ( error ) => {
 
 			throw new CliError( `the bake page did not start in Chromium: ${errors.join( ' | ' ) || ( error as Error ).message}`, 1 );
@@ -107,6 +101,89 @@ export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 
 
 }
 
+/** puppeteer-core, or a clear error when it is not installed (it is an optional peer dependency). */
+async function importPuppeteer(): Promise<typeof import( 'puppeteer-core' )[ 'default' ]> {
+
+	try {
+
+		return ( await import( 'puppeteer-core' ) ).default;
+
+	} catch {
+
+		throw new CliError( 'capture-lighting bake drives Chromium through puppeteer-core, which is not installed: npm install puppeteer-core' );
+
+	}
+
+}
+
+/** The bundled bake page next to the compiled CLI (dist/cli/page/), or null when running from source. */
+function findPrebuiltPage(): string | null {
+
+	const folder = resolve( dirname( fileURLToPath( import.meta.url ) ), 'page' );
+	return import.meta.url.endsWith( '.js' ) && existsSync( resolve( folder, 'index.html' ) ) && existsSync( resolve( folder, 'assets' ) ) ? folder : null;
+
+}
+
+interface PageServer { baseUrl: string; close(): Promise<void> }
+
+/** Plain files: each route serves its folder as it is on disk. */
+async function startStaticServer( routes: [ string, string ][] ): Promise<PageServer> {
+
+	const handlers = routes.map( ( [ route, folder ] ) => [ route, serveFolder( folder ) ] as const );
+	const server: Server = createHttpServer( ( request, response ) => {
+
+		const url = request.url ?? '/';
+		for ( const [ route, handler ] of handlers ) {
+
+			if ( url.startsWith( route + '/' ) ) {
+
+				request.url = url.slice( route.length );
+				handler( request, response );
+				return;
+
+			}
+
+		}
+
+		response.statusCode = 404;
+		response.end( `not found: ${url}` );
+
+	} );
+	await new Promise<void>( ( done ) => server.listen( 0, '127.0.0.1', done ) );
+	const { port } = server.address() as AddressInfo;
+	return { baseUrl: `http://127.0.0.1:${port}/`, close: () => new Promise<void>( ( done ) => server.close( () => done() ) ) };
+
+}
+
+/** Vite compiles the page from source (repository checkouts, where dist/ may be stale or absent). */
+async function startViteServer( root: string, folders: [ string, string ][] ): Promise<PageServer> {
+
+	let vite: typeof import( 'vite' );
+	try {
+
+		vite = await import( 'vite' );
+
+	} catch {
+
+		throw new CliError( 'the bake page is not built (dist/cli/page/) and Vite is not installed to compile it: run npm run build in the package, or npm install vite', 1 );
+
+	}
+
+	const server: ViteDevServer = await vite.createServer( {
+		configFile: false,
+		root,
+		logLevel: 'error',
+		plugins: folders.map( ( [ route, folder ] ) => folderPlugin( route, folder ) ),
+		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
+		// No watching or HMR: an edit elsewhere must not reload the page mid-bake.
+		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null },
+		optimizeDeps: { noDiscovery: true, include: [] },
+	} );
+	await server.listen();
+	return { baseUrl: server.resolvedUrls!.local[ 0 ], close: () => server.close() };
+
+}
+
 /** The repository (or installed package) root: the nearest folder up with cli/bakePage/index.html, from source or from dist/cli. */
 function findRoot(): string {
 
@@ -125,43 +202,52 @@ function findRoot(): string {
 const TYPES: Record<string, string> = {
 	'.gltf': 'model/gltf+json', '.glb': 'model/gltf-binary', '.bin': 'application/octet-stream', '.obj': 'text/plain', '.mtl': 'text/plain',
 	'.png': 'image/png', '.jpg': 'image/jpeg', '.jpeg': 'image/jpeg', '.webp': 'image/webp', '.ktx2': 'image/ktx2', '.hdr': 'application/octet-stream',
+	'.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css',
 };
 
-/** Serves the files of `folder` (and its subfolders) at `route`, raw, as they are on disk. */
+/** Serves the files of `folder` (and its subfolders) at `route` of the Vite server, raw, as they are on disk. */
 function folderPlugin( route: string, folder: string ): Plugin {
 
+	const serve = serveFolder( folder );
 	return {
 		name: `capture-lighting-folder${route.replace( /\//g, '-' )}`,
 		configureServer( server ) {
 
-			server.middlewares.use( route, ( request: IncomingMessage, response: ServerResponse ) => {
-
-				let path: string;
-				try {
-
-					path = decodeURIComponent( ( request.url ?? '/' ).split( '?' )[ 0 ] );
-
-				} catch {
-
-					path = '';
-
-				}
-
-				const file = resolve( folder, '.' + path );
-				if ( ! path || ! file.startsWith( folder + sep ) || ! existsSync( file ) || ! statSync( file ).isFile() ) {
-
-					response.statusCode = 404;
-					response.end( `not found: ${path} (in ${folder})` );
-					return;
-
-				}
-
-				response.setHeader( 'Content-Type', TYPES[ extname( file ).toLowerCase() ] ?? 'application/octet-stream' );
-				createReadStream( file ).pipe( response );
-
-			} );
+			server.middlewares.use( route, serve );
 
 		},
+	};
+
+}
+
+/** A request handler for the files of `folder` (request.url relative to it); nothing outside it. */
+function serveFolder( folder: string ): ( request: IncomingMessage, response: ServerResponse ) => void {
+
+	return ( request, response ) => {
+
+		let path: string;
+		try {
+
+			path = decodeURIComponent( ( request.url ?? '/' ).split( '?' )[ 0 ] );
+
+		} catch {
+
+			path = '';
+
+		}
+
+		const file = resolve( folder, '.' + path );
+		if ( ! path || ! file.startsWith( folder + sep ) || ! existsSync( file ) || ! statSync( file ).isFile() ) {
+
+			response.statusCode = 404;
+			response.end( `not found: ${path} (in ${folder})` );
+			return;
+
+		}
+
+		response.setHeader( 'Content-Type', TYPES[ extname( file ).toLowerCase() ] ?? 'application/octet-stream' );
+		createReadStream( file ).pipe( response );
+
 	};
 
 }

@@ -1,10 +1,11 @@
+import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { bakedVolumeFromJSON, decodeBakedVolume } from '../../src/io/index.js';
-import { ROOM_PROBES, runCli, writeConstantHDR, writeEmptyGLTF, writeLayout, writeLitFloorGLTF, writeRoom } from './fixtures.js';
+import { ROOM_PROBES, ROOT, runCli, writeConstantHDR, writeEmptyGLTF, writeLayout, writeLitFloorGLTF, writeRoom } from './fixtures.js';
 
 // End to end in headless Chromium (SwiftShader): few, small bakes at 8² and 16².
 const CHROMIUM = process.env.CHROME_PATH ?? process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
@@ -161,6 +162,36 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake (headless Chromium)
 		expect( run.stderr ).toMatch( /^capture-lighting: the capture failed in Chromium: .+/ );
 		expect( run.code ).toBe( 1 );
 		expect( existsSync( join( dir, 'broken.bin' ) ) ).toBe( false );
+
+	} );
+
+} );
+
+describe.skipIf( skipReason !== '' )( 'capture-lighting as an installed package runs it: compiled to JS, the bake page prebuilt and served as plain files (no Vite at bake time)', () => {
+
+	// What `npm run build` makes, written under test/output so that `three` and puppeteer-core
+	// resolve from the repository's node_modules, as from a package's.
+	const out = join( ROOT, 'test/output/cli-dist' );
+
+	it( 'builds, bakes the red-wall room from the compiled CLI, and gives the same SH as the CLI run from source', () => {
+
+		rmSync( out, { recursive: true, force: true } );
+		const tsc = spawnSync( process.execPath, [ 'node_modules/typescript/bin/tsc', '-p', 'cli/tsconfig.build.json', '--outDir', out ], { cwd: ROOT, encoding: 'utf8' } );
+		expect( tsc.status, tsc.stdout + tsc.stderr ).toBe( 0 );
+		const vite = spawnSync( process.execPath, [ 'node_modules/vite/bin/vite.js', 'build', '-c', 'cli/bakePage/vite.config.ts', '--outDir', join( out, 'cli/page' ) ], { cwd: ROOT, encoding: 'utf8' } );
+		expect( vite.status, vite.stdout + vite.stderr ).toBe( 0 );
+
+		const room = writeRoom( dir );
+		const layout = writeLayout( dir, 'room-built.json', ROOM_PROBES );
+		const fromSource = join( dir, 'room-source.bin' ), fromBuild = join( dir, 'room-built.bin' );
+		const args = [ '--probes', layout, '--resolution', '8', '--precision', 'float32', '--ambient', '1', '--quiet' ];
+		const source = runCli( [ 'bake', room, '--out', fromSource, ...args ], ENV );
+		expect( source.code, source.stderr ).toBe( 0 );
+		const built = spawnSync( process.execPath, [ join( out, 'cli/main.js' ), 'bake', room, '--out', fromBuild, ...args ], { cwd: dir, encoding: 'utf8', env: { ...process.env, ...ENV }, timeout: 120_000 } );
+		expect( built.status, built.stderr ).toBe( 0 );
+		const a = decodeBakedVolume( readFileSync( fromSource ) ), b = decodeBakedVolume( readFileSync( fromBuild ) );
+		expect( b.sh.length ).toBe( a.sh.length );
+		for ( let i = 0; i < a.sh.length; i ++ ) expect( b.sh[ i ] ).toBeCloseTo( a.sh[ i ], 5 );
 
 	} );
 
