@@ -47,6 +47,8 @@ export interface DemoReport {
 	/** Time between the last frames (what the user sees, GPU included), ms. */
 	intervalMs: number[];
 	character: 'fox' | 'fallback' | 'none';
+	/** With `?volume=`: ms to decode and validate the baked file into a volume (no capture). */
+	loadMs?: number;
 	/** With the visibility guard on: tetrahedra with an edge through static geometry. */
 	leakingCells?: number;
 	error: string;
@@ -65,7 +67,8 @@ export interface DemoReport {
  * probes with these names, e.g. to see what one bleed probe contributes), `character=0`,
  * `ball=x,y,z` (a white probe-lit test ball there), `tonemapping=none`, `guard=1` (visibility
  * guard on), `zones=1` (the layout's lighting zones), `outside=nearest` (nearest-hull-point extrapolation instead of outer cells), `deringing=s` (window strength), `nonnegative=1`,
- * `bounces=n` (capture again n times with the static scene lit by the probes).
+ * `bounces=n` (capture again n times with the static scene lit by the probes), `volume=URL` (a
+ * baked volume file instead of a capture).
  */
 export class DemoApp {
 
@@ -204,9 +207,16 @@ export class DemoApp {
 			for ( let i = 0; i < spheres; i ++ ) this.addSphere( i, spheres );
 			const ball = this.query.get( 'ball' );
 			if ( ball ) this.addBall( ball.split( ',' ).map( Number ) );
+			const baked = this.query.get( 'volume' );
+			if ( baked ) await this.loadBaked( baked );
 			this.createGui();
-			this.rebuildVolume();
-			await this.recapture();
+			if ( ! baked ) {
+
+				this.rebuildVolume();
+				await this.recapture();
+
+			}
+
 			this.renderer.setAnimationLoop( ( timestamp ) => this.frame( timestamp ) );
 
 		} catch ( error ) {
@@ -275,14 +285,50 @@ export class DemoApp {
 
 	}
 
-	/** A new volume for the current layout, keeping the SH of probes that did not change. */
-	private rebuildVolume( sh?: Float32Array ): void {
+	/**
+	 * A baked volume instead of a capture (`?volume=URL`, a file from "export baked volume" or
+	 * `capture-lighting bake`): its stored tetrahedralization is used as it is.
+	 */
+	private async loadBaked( url: string ): Promise<void> {
+
+		this.overlay.progress( `loading ${url}…`, 0 );
+		const response = await fetch( url );
+		if ( ! response.ok ) throw new Error( `Baked volume not found: ${url} (HTTP ${response.status}).` );
+		const buffer = await response.arrayBuffer();
+		const start = performance.now();
+		const volume = LightProbeVolume.fromArrayBuffer( buffer );
+		this.report.loadMs = performance.now() - start;
+		const layout: ProbeLayout = { name: `baked: ${url.split( /[/?#]/ ).filter( Boolean ).pop()}`, positions: Array.from( volume.positions ), names: volume.names.slice(), roles: volume.roles.slice() };
+		this.layouts.push( layout );
+		this.params.layout = layout.name;
+		this.rebuildVolume( undefined, volume );
+		this.overlay.progress( '', 1 );
+		this.updateMarkers();
+
+	}
+
+	/** Downloads the current volume as a baked file (float16 SH), to load with `?volume=`. */
+	private exportBaked(): void {
+
+		const link = document.createElement( 'a' );
+		link.href = URL.createObjectURL( new Blob( [ this.volume.toArrayBuffer( { precision: 'float16' } ) ], { type: 'application/octet-stream' } ) );
+		link.download = `${this.layout.name.replace( /\W+/g, '-' )}.lpv`;
+		link.click();
+		URL.revokeObjectURL( link.href );
+
+	}
+
+	/**
+	 * A new volume for the current layout, keeping the SH of probes that did not change (or
+	 * `baked`, a volume loaded from a file, as it is).
+	 */
+	private rebuildVolume( sh?: Float32Array, baked?: LightProbeVolume ): void {
 
 		const layout = this.layout;
 		for ( const object of [ ...this.dynamicObjects, ...this.scenery.keys() ] ) { this.volume?.remove( object ); this.trilinear?.remove( object ); }
 		const interpolator = createProbeInterpolator( layout.positions, { outside: this.params.outside === 'nearest face' ? 'nearestFace' : 'outerCells' } );
 		const zones = this.params.zones ? layout.zones?.map( ( { name, probes, bounds: { min, max } } ) => ( { name, probes, bounds: { min: { x: min[ 0 ], y: min[ 1 ], z: min[ 2 ] }, max: { x: max[ 0 ], y: max[ 1 ], z: max[ 2 ] } } } ) ) : undefined;
-		this.volume = new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator, zones } );
+		this.volume = baked ?? new LightProbeVolume( { positions: layout.positions, names: layout.names, roles: layout.roles, sh, interpolator, zones } );
 		this.trilinear = null;
 		if ( layout.grid ) {
 
@@ -430,6 +476,7 @@ export class DemoApp {
 		edit.add( { add: () => this.addProbe() }, 'add' ).name( 'add probe at target' );
 		edit.add( { remove: () => this.removeSelectedProbe() }, 'remove' ).name( 'delete selected probe' );
 		edit.add( { export: () => this.exportLayout() }, 'export' ).name( 'export layout JSON' );
+		edit.add( { export: () => this.exportBaked() }, 'export' ).name( 'export baked volume (.lpv)' );
 
 	}
 

@@ -1,5 +1,5 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { existsSync, mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import type { Page } from 'puppeteer-core';
 import { ASSETS, browserSkipReason, startBrowser, type BrowserSession } from '../helpers/browser.js';
 import { readPNG, writePNG } from '../helpers/images.js';
@@ -129,6 +129,32 @@ describe.skipIf( browserSkipReason !== '' )( `demo toggles beyond the paper, in 
 		expect( result.counts ).toEqual( [ 1, 1 ] ); // the moved probe, then the added one
 		expect( result.after ).toBe( result.probes + 1 );
 		expect( result.cells ).toBeGreaterThan( 0 );
+
+	} );
+
+	it( 'basic: a baked volume exported from the page and loaded back with ?volume= (no capture) draws the same picture', async () => {
+
+		const captured = await openDemo( session, `examples/basic.html?${FIXED}&t=4` );
+		expect( captured.demo.error ).toBe( '' );
+		const bytes = await captured.page.evaluate( 'Array.from( new Uint8Array( window.__demoApp.activeVolume.toArrayBuffer( { precision: "float16" } ) ) )' ) as number[];
+		const before = await shot( captured.page, 'basic-captured' );
+		await captured.page.close();
+		writeFileSync( 'test/output/beyond/basic.lpv', Uint8Array.from( bytes ) );
+
+		const loaded = await openDemo( session, `examples/basic.html?${FIXED}&t=4&volume=/test/output/beyond/basic.lpv` );
+		expect( loaded.demo.error ).toBe( '' );
+		expect( loaded.errors ).toEqual( [] );
+		expect( loaded.demo.probes ).toBe( captured.demo.probes );
+		expect( loaded.demo.cells ).toBe( captured.demo.cells );
+		const report = await loaded.page.evaluate( 'window.__demo' ) as { captureMs: number; loadMs: number };
+		expect( report.captureMs ).toBe( 0 ); // nothing captured
+		expect( report.loadMs ).toBeGreaterThan( 0 );
+		const after = await shot( loaded.page, 'basic-baked' );
+		await loaded.page.close();
+		// float16 SH: a channel may move by a unit here and there, no more.
+		let worst = 0;
+		for ( let i = 0; i < before.data.length; i ++ ) if ( i % 4 !== 3 ) worst = Math.max( worst, Math.abs( before.data[ i ] - after.data[ i ] ) );
+		expect( worst ).toBeLessThanOrEqual( 2 );
 
 	} );
 
