@@ -27,7 +27,7 @@ export interface OurTetrahedralMesh {
 
 export interface OurApi {
 	tetrahedralize( points: ArrayLike<number> ): Tetrahedralization;
-	TetrahedralMesh: new ( positions: ArrayLike<number> ) => OurTetrahedralMesh;
+	TetrahedralMesh: new ( positions: ArrayLike<number>, options?: { outside?: 'outerCells' | 'nearestFace' } ) => OurTetrahedralMesh;
 	blendSH( indices: ArrayLike<number>, weights: ArrayLike<number>, probeSH: Float32Array, out: Float32Array, count?: number ): unknown;
 }
 
