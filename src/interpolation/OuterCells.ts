@@ -38,11 +38,17 @@ const _cubic = new Float64Array( 4 );
  * hull happens to be triangulated (a grid's side gets its face normal, a box corner the diagonal
  * (1, 1, 1)/√3 whatever the split) nor on the faces' sizes — area weighting would let the large
  * faces of a thin slab swamp its narrow rim, so the rim's rays would run almost parallel to the
- * slab and its outer cells would be slivers. On very flat, irregular hulls the angle-weighted
- * normals of neighbouring rim vertices can point so differently that a moved triangle flips over
- * and its cell overlaps its neighbours (two answers for one point: a jump in the light); those
- * normals alone are then smoothed until no cell flips (see `untangle`), which leaves grids, slabs
- * and ordinary volumes untouched.
+ * slab and its outer cells would be slivers.
+ *
+ * The cells tile the outside (every outside point in exactly one cell, no gaps, no overlaps)
+ * when every cell's sweep is one-to-one — its Jacobian N(t) · nᵢ stays positive for t ≥ 0 at its
+ * three vertices, a test on three quadratics per cell (see `folds`, which also proves the tiling).
+ * On very flat, irregular hulls angle-weighted normals of neighbouring rim vertices can point so
+ * differently that rays cross each other's cells (gaps answered by the fallback, or two cells with
+ * different weights: jumps in the light). Those normals alone are then smoothed until no cell
+ * folds (`untangle`), and where smoothing does not get there, pulled step by step towards the
+ * radial direction from the hull's centroid, which never folds (`unfold`, guaranteed to
+ * terminate). Grids, slabs and ordinary volumes keep their angle-weighted normals exactly.
  *
  * The walk from cell to cell ({@link OuterCells.locate}) crosses the edge of the most negative
  * weight, so a point costs a few cells, not a scan of the hull; the cells are built in O(hull
@@ -67,8 +73,9 @@ export class OuterCells {
 	readonly adjacency: Int32Array;
 
 	/**
-	 * Unit outward normal per probe: the angle-weighted average of its hull faces' normals (smoothed
-	 * where a cell would flip, see the class comment); 0, 0, 0 off the hull.
+	 * Unit outward normal per probe: the angle-weighted average of its hull faces' normals (smoothed,
+	 * then blended towards radial, where a cell would fold, see the class comment); 0, 0, 0 off the
+	 * hull.
 	 */
 	readonly normals: Float64Array;
 
@@ -147,7 +154,7 @@ export class OuterCells {
 
 		}
 
-		untangle( p, faces, faceNormals, angles, normals );
+		if ( untangle( p, faces, faceNormals, angles, normals, this.scale ) ) unfold( p, faces, normals, this.scale );
 
 		// Edge adjacency: the directed edge (u → v) of one face is (v → u) in its neighbour.
 		const probeCount = p.length / 3;
@@ -427,22 +434,43 @@ export class OuterCells {
 }
 
 // Rounds of smoothing untangle() may take (a round costs O(hull faces) and runs only while some
-// cell still flips; very flat random layouts need a dozen or more).
+// cell still folds; very flat random layouts need a dozen or more).
 const UNTANGLE_ROUNDS = 40;
 
 // How steep over each adjacent face a smoothed normal must stay, as a fraction of the
-// angle-weighted normal's steepness there. On six 100-probe random layouts flattened 100:1, 0.5
-// left 0.5 % of the outside points sampled within half an extent in two overlapping cells, 0.1 left
-// 1 point in 18,000.
+// angle-weighted normal's steepness there.
 const MIN_STEEPNESS = 0.1;
 
+// Least cosine between a ray and the normal of a hull face it starts from: the sweep must leave the
+// face (a ray along the face would give a cell of zero thickness there).
+const MIN_OUTWARD = 1e-9;
+
+// Weights of the radial direction in the normals of the vertices of cells that still fold after
+// smoothing (see `unfold`), step by step; the last, 1, is the purely radial normal.
+const RADIAL_BLENDS = [ 0, 0.125, 0.25, 0.5, 1 ];
+
+// Rounds of `unfold` before every hull vertex is made radial (a bound on the build's time: each
+// round costs O(hull faces); the survey's flat layouts need a few).
+const RADIAL_ROUNDS = 64;
+
 /**
- * Whether the triangle of face f, moved along the vertex normals, flips over at some t > 0 — its
- * normal N(t) = (b(t) − a(t)) × (c(t) − a(t)) has N(t)·N(0) = A + Bt + Ct², A > 0, with a positive
- * root — or its sweep turns back far away. Such a cell overlaps its neighbours (two cells claim the
- * same points, with different weights: the value jumps where the walk changes cell).
+ * Whether outer cell f is not a one-to-one sweep: the map (w, t) ↦ Σ wᵢ (pᵢ + t nᵢ) (w in the
+ * triangle, t ≥ 0) must have a positive Jacobian everywhere. That Jacobian is
+ * det[E1 + tF1, E2 + tF2, Σ wᵢ nᵢ] = N(t) · Σ wᵢ nᵢ with N(t) = N0 + t N1 + t² N2 the moved
+ * triangle's normal; it is linear in w, so it is positive on the triangle iff the three quadratics
+ * qᵢ(t) = N(t) · nᵢ are positive for t ≥ 0. At t = 0 that says each ray leaves the face
+ * (nᵢ · N0 > 0); far away, since (F1 × F2) · nᵢ = det[na, nb, nc] for each i, that the triangle of
+ * normals keeps its orientation (the sweep keeps moving outwards). When every cell passes, the
+ * sweep of the whole hull surface S is a local homeomorphism S × [0, ∞) → outside that is the
+ * identity on S and proper (|q| → ∞ with t, as every ray leaves its faces), hence a covering of
+ * the outside (connected, simply connected) that is one-to-one near S: a bijection. So the cells
+ * tile the outside with neither gaps nor overlaps, and the point of each cell is reached at a
+ * single t. This is what the older test (the moved triangle's normal against its original one,
+ * N(t) · N0 > 0) missed: two rays of a thin rim can cross each other's cells while each moved
+ * triangle keeps its orientation. τ = t / L for scale-free tolerances; only τ ≤ FAR_LIMIT matters
+ * (farther queries are pulled in), which absorbs rounding in flat parts (C ≈ 0, B ≈ 0).
  */
-function folds( p: Float64Array, faces: Uint32Array, n: Float64Array, f: number ): boolean {
+function folds( p: Float64Array, faces: Uint32Array, n: Float64Array, f: number, L: number ): boolean {
 
 	const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
 	const e1x = p[ b ] - p[ a ], e1y = p[ b + 1 ] - p[ a + 1 ], e1z = p[ b + 2 ] - p[ a + 2 ];
@@ -454,31 +482,42 @@ function folds( p: Float64Array, faces: Uint32Array, n: Float64Array, f: number 
 	const n1y = ( f1z * e2x - f1x * e2z ) + ( e1z * f2x - e1x * f2z );
 	const n1z = ( f1x * e2y - f1y * e2x ) + ( e1x * f2y - e1y * f2x );
 	const n2x = f1y * f2z - f1z * f2y, n2y = f1z * f2x - f1x * f2z, n2z = f1x * f2y - f1y * f2x;
-	const A = n0x * n0x + n0y * n0y + n0z * n0z, B = n1x * n0x + n1y * n0y + n1z * n0z, C = n2x * n0x + n2y * n0y + n2z * n0z;
-	// Flat parts of the hull give C ≈ 0 from rounding: not a flip.
-	if ( C < - 1e-12 * A || ( B < 0 && B * B > 4 * A * C ) ) return true;
-	// Far away the moved triangle is ≈ t·(na, nb, nc): the sweep must keep moving outwards there,
-	// det[na, nb, nc] > 0 (flat parts: 0), or the cubic's t³ term turns back and cells overlap.
-	const spherical = n[ a ] * ( n[ b + 1 ] * n[ c + 2 ] - n[ b + 2 ] * n[ c + 1 ] ) - n[ a + 1 ] * ( n[ b ] * n[ c + 2 ] - n[ b + 2 ] * n[ c ] ) + n[ a + 2 ] * ( n[ b ] * n[ c + 1 ] - n[ b + 1 ] * n[ c ] );
-	return spherical < - 1e-12;
+	const area = Math.hypot( n0x, n0y, n0z );
+	if ( ! ( area > 0 ) ) return false;
+	const s0 = 1 / area, s1 = L / area, s2 = L * L / area, T = FAR_LIMIT;
+	for ( let k = 0; k < 3; k ++ ) {
+
+		const v = k === 0 ? a : k === 1 ? b : c, x = n[ v ], y = n[ v + 1 ], z = n[ v + 2 ];
+		const A = ( n0x * x + n0y * y + n0z * z ) * s0;
+		const B = ( n1x * x + n1y * y + n1z * z ) * s1;
+		const C = ( n2x * x + n2y * y + n2z * z ) * s2;
+		if ( ! ( A > MIN_OUTWARD ) ) return true;
+		if ( ! ( A + T * ( B + T * C ) > 0 ) ) return true;
+		// Interior minimum of the quadratic at τ = −B / 2C.
+		if ( C > 0 && B < 0 && - B < 2 * C * T && B * B >= 4 * A * C ) return true;
+
+	}
+
+	return false;
 
 }
 
 /**
- * Where angle-weighted normals make some outer cell flip over (thin, irregular hulls: a flat box of
+ * Where angle-weighted normals make some outer cell fold (thin, irregular hulls: a flat box of
  * random probes has thin rim faces whose vertex normals point every which way), smooths the
  * normals of those cells' vertices towards the angle-weighted average of their neighbours' normals,
- * round by round until no cell flips. Each move is shortened as far as needed to keep the ray at
+ * round by round until no cell folds. Each move is shortened as far as needed to keep the ray at
  * least MIN_STEEPNESS as steep over every adjacent face as the angle-weighted normal was
- * (n·n_f ≥ 0.1 × its minimum), so the sweeps still leave the hull. Hulls without flips (grids,
+ * (n·n_f ≥ 0.1 × its minimum), so the sweeps still leave the hull. Hulls without folds (grids,
  * slabs, most volumes) keep their angle-weighted normals exactly. O(hull faces) per round.
+ * @returns Whether some cell still folds (then `unfold` takes over).
  */
-function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Array, angles: Float64Array, normals: Float64Array ): void {
+function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Array, angles: Float64Array, normals: Float64Array, L: number ): boolean {
 
 	const faceCount = faces.length / 3, vertexCount = normals.length / 3;
 	let any = false;
-	for ( let f = 0; f < faceCount && ! any; f ++ ) any = folds( p, faces, normals, f );
-	if ( ! any ) return;
+	for ( let f = 0; f < faceCount && ! any; f ++ ) any = folds( p, faces, normals, f, L );
+	if ( ! any ) return false;
 
 	// Faces around each vertex (compressed rows), and each vertex's least steepness over them.
 	const start = new Int32Array( vertexCount + 1 ), incident = new Int32Array( 3 * faceCount );
@@ -512,7 +551,7 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 	// O(probes) (probes inside the hull are never mobile).
 	const mobile = new Uint8Array( vertexCount ), target = new Float64Array( normals.length ), moving = new Int32Array( vertexCount );
 	let movingCount = 0;
-	for ( let round = 0; round < UNTANGLE_ROUNDS; round ++ ) {
+	for ( let round = 0; round <= UNTANGLE_ROUNDS; round ++ ) {
 
 		for ( let m = 0; m < movingCount; m ++ ) {
 
@@ -526,7 +565,7 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 		let count = 0;
 		for ( let f = 0; f < faceCount; f ++ ) {
 
-			if ( ! folds( p, faces, normals, f ) ) continue;
+			if ( ! folds( p, faces, normals, f, L ) ) continue;
 			for ( let k = 0; k < 3; k ++ ) {
 
 				const v = faces[ 3 * f + k ];
@@ -538,7 +577,8 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 
 		}
 
-		if ( count === 0 ) return;
+		if ( count === 0 ) return false;
+		if ( round === UNTANGLE_ROUNDS ) break;
 		for ( let f = 0; f < faceCount; f ++ ) {
 
 			const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
@@ -570,6 +610,85 @@ function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Arra
 			}
 
 		}
+
+	}
+
+	return true;
+
+}
+
+/**
+ * The guaranteed end of the normals' repair, for cells smoothing left folded: raises the normals
+ * of their vertices, round by round, one step of RADIAL_BLENDS towards the radial direction from
+ * the hull vertices' centroid c (strictly inside the hull), until no cell folds. Radial normals
+ * never fold: with uᵢ = pᵢ − c and nᵢ = uᵢ / |uᵢ|, the moved vertex is c + sᵢ(t) uᵢ with
+ * sᵢ(t) = 1 + t / |uᵢ|, so the moved triangle stays on the three edges of the cone from c over the
+ * face, and qₐ(t) = N(t) · nₐ = s_b(t) s_c(t) det[uₐ, u_b, u_c] / |uₐ| > 0 (likewise for b and c):
+ * those cells are the cones from c beyond their faces. Whether a cell folds depends on its three
+ * normals only, so a folded cell always has a vertex below the radial step, and every round raises
+ * the total of the steps: at most (RADIAL_BLENDS.length − 1) × hull vertices rounds, of O(hull
+ * faces) each. Past RADIAL_ROUNDS every hull vertex takes its radial normal (all cones: a tiling).
+ * Only the neighbourhood of the folds moves, by as little as this ladder allows.
+ */
+function unfold( p: Float64Array, faces: Uint32Array, normals: Float64Array, L: number ): void {
+
+	const faceCount = faces.length / 3, vertexCount = normals.length / 3;
+	const onHull = new Uint8Array( vertexCount );
+	let cx = 0, cy = 0, cz = 0, hullCount = 0;
+	for ( let i = 0; i < faces.length; i ++ ) {
+
+		const v = faces[ i ];
+		if ( onHull[ v ] ) continue;
+		onHull[ v ] = 1; hullCount ++;
+		cx += p[ 3 * v ]; cy += p[ 3 * v + 1 ]; cz += p[ 3 * v + 2 ];
+
+	}
+
+	cx /= hullCount; cy /= hullCount; cz /= hullCount;
+	const base = normals.slice(), level = new Uint8Array( vertexCount ), top = RADIAL_BLENDS.length - 1;
+	const blend = ( v: number, s: number ): void => {
+
+		const i = 3 * v, ux = p[ i ] - cx, uy = p[ i + 1 ] - cy, uz = p[ i + 2 ] - cz, ul = Math.hypot( ux, uy, uz );
+		if ( s === 1 ) { normals[ i ] = ux / ul; normals[ i + 1 ] = uy / ul; normals[ i + 2 ] = uz / ul; return; }
+		const x = ( 1 - s ) * base[ i ] + s * ux / ul, y = ( 1 - s ) * base[ i + 1 ] + s * uy / ul, z = ( 1 - s ) * base[ i + 2 ] + s * uz / ul;
+		const l = Math.hypot( x, y, z );
+		normals[ i ] = x / l; normals[ i + 1 ] = y / l; normals[ i + 2 ] = z / l;
+
+	};
+
+	for ( let round = 0; round < RADIAL_ROUNDS; round ++ ) {
+
+		// Raise this round from the folds seen at its start (the same for every face of the round).
+		let any = false;
+		for ( let f = 0; f < faceCount; f ++ ) {
+
+			if ( ! folds( p, faces, normals, f, L ) ) continue;
+			any = true;
+			for ( let k = 0; k < 3; k ++ ) {
+
+				const v = faces[ 3 * f + k ];
+				// 128 + level marks "raise once this round".
+				if ( level[ v ] < top ) level[ v ] |= 128;
+
+			}
+
+		}
+
+		if ( ! any ) return;
+		for ( let v = 0; v < vertexCount; v ++ ) {
+
+			if ( level[ v ] < 128 ) continue;
+			level[ v ] = ( level[ v ] & 127 ) + 1;
+			blend( v, RADIAL_BLENDS[ level[ v ] ] );
+
+		}
+
+	}
+
+	for ( let f = 0; f < faceCount; f ++ ) if ( folds( p, faces, normals, f, L ) ) {
+
+		for ( let v = 0; v < vertexCount; v ++ ) if ( onHull[ v ] ) blend( v, 1 );
+		return;
 
 	}
 

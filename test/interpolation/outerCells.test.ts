@@ -518,6 +518,195 @@ describe( 'TetrahedralMesh outer cells (outside the convex hull)', () => {
 
 } );
 
+/** `p` with coordinate k multiplied by s[k]: a box flattened in one or two axes. */
+function scaledPoints( p: Float64Array, s: number[] ): Float64Array {
+
+	for ( let i = 0; i < p.length; i ++ ) p[ i ] *= s[ i % 3 ];
+	return p;
+
+}
+
+/** n random points in the unit disc times [0, h] in z: a flat round hull whose rim is all sharp edges. */
+function discPoints( n: number, seed: number, h: number ): Float64Array {
+
+	const random = seededRandom( seed ), out: number[] = [];
+	while ( out.length < 3 * n ) {
+
+		const x = 2 * random() - 1, y = 2 * random() - 1;
+		if ( x * x + y * y < 1 ) out.push( x, y, h * random() );
+
+	}
+
+	return Float64Array.from( out );
+
+}
+
+/** `p` rotated about z by 0.7 rad, then about x by 0.4 rad: flat layouts not aligned with the axes. */
+function rotatedPoints( p: Float64Array ): Float64Array {
+
+	const c = Math.cos( 0.7 ), s = Math.sin( 0.7 ), c2 = Math.cos( 0.4 ), s2 = Math.sin( 0.4 );
+	for ( let i = 0; i < p.length; i += 3 ) {
+
+		const x = p[ i ], y = p[ i + 1 ], z = p[ i + 2 ], x1 = c * x - s * y, y1 = s * x + c * y;
+		p[ i ] = x1; p[ i + 1 ] = c2 * y1 - s2 * z; p[ i + 2 ] = s2 * y1 + c2 * z;
+
+	}
+
+	return p;
+
+}
+
+describe( 'outer cells tile the outside of flat hulls (no gaps, no overlaps)', () => {
+
+	/*
+	 * Layouts of the survey whose angle-weighted (then smoothed) normals left gaps between sweeps or
+	 * cells overlapping with different weights before the Jacobian test of OuterCells (boxes
+	 * flattened 20:1 and 100:1 in one or two axes, a rotated one, a disc 400:1; on the old normals
+	 * the disc has gaps and overlaps here, the others folding cells and jumps along paths), plus a
+	 * 200:1 box, a 40:1 disc and ordinary layouts that must stay tiled.
+	 */
+	const flat: Case[] = [
+		makeCase( 'box 20:1 (100, seed 7201)', scaledPoints( randomPoints( 100, 7201 ), [ 1, 1, 1 / 20 ] ) ),
+		makeCase( 'box 20:1 (100, seed 7203)', scaledPoints( randomPoints( 100, 7203 ), [ 1, 1, 1 / 20 ] ) ),
+		makeCase( 'box 100:1 in two axes (100, seed 9002)', scaledPoints( randomPoints( 100, 9002 ), [ 1, 1 / 100, 1 / 100 ] ) ),
+		makeCase( 'rotated box 100:1 (200)', rotatedPoints( scaledPoints( randomPoints( 200, 9100 ), [ 1, 1, 1 / 100 ] ) ) ),
+		makeCase( 'disc 400:1 (200)', discPoints( 200, 70, 0.005 ) ),
+		makeCase( 'disc 40:1 (200)', discPoints( 200, 70, 0.05 ) ),
+		makeCase( 'box 200:1 (100, seed 9202)', scaledPoints( randomPoints( 100, 9202 ), [ 1, 1, 1 / 200 ] ) ),
+		makeCase( 'random cloud (50)', randomPoints( 50, 5002 ) ),
+		makeCase( '12x6x6 grid', gridPoints( 12, 6, 6, 1 ) ),
+	];
+
+	it( 'every outside point, 0.01 to 10 extents out, is in exactly one cell: the walk never falls back, brute force finds no second cell with other weights (22,500 points)', () => {
+
+		const random = seededRandom( 77 );
+		const out = new Float64Array( 4 ), found = new Float64Array( 4 );
+		const report: string[] = [];
+		for ( const c of flat ) {
+
+			const cells = c.mesh.outerCells, faces = cells.faces, count = cells.count;
+			let gaps = 0, overlaps = 0;
+			for ( const margin of [ 0.01, 0.1, 0.5, 2, 10 ] ) {
+
+				for ( let i = 0; i < 500; i ++ ) {
+
+					const q = randomOutside( c, random, margin );
+					const f = cells.locate( q[ 0 ], q[ 1 ], q[ 2 ], Math.floor( random() * count ), found );
+					if ( f < 0 ) { gaps ++; continue; }
+					for ( let g = 0; g < count; g ++ ) {
+
+						if ( g === f || ! ( cells.solve( g, q[ 0 ], q[ 1 ], q[ 2 ], out ) && out[ 1 ] >= - 1e-10 && out[ 2 ] >= - 1e-10 && out[ 3 ] >= - 1e-10 ) ) continue;
+						// A second claimant is fine only on a shared quad or ray, with the same weight per probe.
+						let differs = false;
+						for ( let k = 0; k < 3; k ++ ) {
+
+							const j = Array.from( faces.subarray( 3 * f, 3 * f + 3 ) ).indexOf( faces[ 3 * g + k ] );
+							if ( Math.abs( out[ 1 + k ] - ( j < 0 ? 0 : found[ 1 + j ] ) ) > 1e-7 ) differs = true;
+
+						}
+
+						if ( differs ) { overlaps ++; break; }
+
+					}
+
+				}
+
+			}
+
+			report.push( `${c.name}: ${gaps} gaps, ${overlaps} overlaps` );
+
+		}
+
+		expect( report ).toEqual( flat.map( ( c ) => `${c.name}: 0 gaps, 0 overlaps` ) );
+
+	} );
+
+	it( 'every hull vertex\'s ray leaves all its faces and no cell folds: N(t)·nᵢ > 0 for t up to 1e6 extents (sampled, independent of the build\'s quadratic test)', () => {
+
+		const bad: string[] = [];
+		for ( const c of flat ) {
+
+			const { mesh } = c, p = mesh.positions, n = mesh.outerCells.normals, faces = mesh.hullFaces;
+			for ( let f = 0; f < faces.length / 3; f ++ ) {
+
+				const v = [ 0, 1, 2 ].map( ( k ) => 3 * faces[ 3 * f + k ] );
+				for ( const t of [ 0, 1e-4, 1e-3, 0.01, 0.03, 0.1, 0.3, 1, 3, 10, 100, 1e4, 1e6 ].map( ( x ) => x * c.extent ) ) {
+
+					const m = v.map( ( i ) => [ 0, 1, 2 ].map( ( k ) => p[ i + k ] + t * n[ i + k ] ) );
+					const e1 = [ 0, 1, 2 ].map( ( k ) => m[ 1 ][ k ] - m[ 0 ][ k ] ), e2 = [ 0, 1, 2 ].map( ( k ) => m[ 2 ][ k ] - m[ 0 ][ k ] );
+					const N = [ e1[ 1 ] * e2[ 2 ] - e1[ 2 ] * e2[ 1 ], e1[ 2 ] * e2[ 0 ] - e1[ 0 ] * e2[ 2 ], e1[ 0 ] * e2[ 1 ] - e1[ 1 ] * e2[ 0 ] ];
+					for ( const i of v ) if ( ! ( N[ 0 ] * n[ i ] + N[ 1 ] * n[ i + 1 ] + N[ 2 ] * n[ i + 2 ] > 0 ) ) bad.push( `${c.name}: face ${f} at t = ${t}` );
+
+				}
+
+			}
+
+		}
+
+		expect( bad.slice( 0, 5 ) ).toEqual( [] );
+
+	} );
+
+	it( 'continuity on the flat layouts: random straight paths crossing the hull and rims, sampled every 1e-3 of the extent, have no jumps', () => {
+
+		const random = seededRandom( 23 );
+		const report: string[] = [];
+		for ( const c of flat.slice( 0, 7 ) ) {
+
+			const { mesh } = c;
+			let hint = - 1, worst = 0;
+			const value = ( x: number, y: number, z: number ) => { const s = sample( mesh, x, y, z, hint ); hint = s.hint; return s.value; };
+			const centre = [ 0, 1, 2 ].map( ( k ) => 0.5 * ( c.min[ k ] + c.max[ k ] ) );
+			for ( let path = 0; path < 40; path ++ ) {
+
+				const a = centre.map( ( m, k ) => m + ( random() - 0.5 ) * 0.6 * ( c.max[ k ] - c.min[ k ] ) );
+				const direction = [ random() - 0.5, random() - 0.5, random() - 0.5 ], length = Math.hypot( ...direction );
+				const b = a.map( ( m, k ) => m + direction[ k ] / length * 1.5 * c.extent );
+				worst = Math.max( worst, largestJump( value, a, b, 1e-3 * c.extent ) );
+				// And a path just outside the flat side (0.01 extents beyond the thinnest axis of the
+				// bounding box), parallel to it, across the rim and the cells swept by the rim's faces.
+				const sizes = [ 0, 1, 2 ].map( ( k ) => c.max[ k ] - c.min[ k ] ), thin = sizes.indexOf( Math.min( ...sizes ) );
+				const from = a.slice(), to = b.slice();
+				from[ thin ] = to[ thin ] = c.max[ thin ] + 0.01 * c.extent;
+				worst = Math.max( worst, largestJump( value, from, to, 1e-3 * c.extent ) );
+
+			}
+
+			report.push( `${c.name}: ${worst}` );
+
+		}
+
+		expect( report ).toEqual( flat.slice( 0, 7 ).map( ( c ) => `${c.name}: 0` ) );
+
+	} );
+
+	it( 'the jump detector sees the nearest-face fallback: forcing it on a band of outside points makes a jump on a path through the band', () => {
+
+		const c = flat[ 0 ], { mesh } = c, cells = mesh.outerCells as unknown as { locate: ( ...args: unknown[] ) => number };
+		const locate = cells.locate, x0 = c.max[ 0 ] + 0.2 * c.extent;
+		// A fake gap: beyond x0 no cell claims the point (what a gap between sweeps did before).
+		cells.locate = function ( this: unknown, ...args: unknown[] ) { return ( args[ 0 ] as number ) > x0 ? - 1 : locate.apply( this, args ); };
+		try {
+
+			let hint = - 1;
+			const value = ( x: number, y: number, z: number ) => { const s = sample( mesh, x, y, z, hint ); hint = s.hint; return s.value; };
+			// Off the rim's normals, where outer cells and the nearest face differ by ~0.18.
+			const y = c.min[ 1 ] + 0.1, z = c.max[ 2 ] + 0.25;
+			expect( largestJump( value, [ c.min[ 0 ], y, z ], [ c.max[ 0 ] + c.extent, y, z ], 1e-3 * c.extent ) ).toBeGreaterThan( 0.05 );
+			// Unforced, the same path is continuous.
+			cells.locate = locate;
+			expect( largestJump( value, [ c.min[ 0 ], y, z ], [ c.max[ 0 ] + c.extent, y, z ], 1e-3 * c.extent ) ).toBe( 0 );
+
+		} finally {
+
+			cells.locate = locate;
+
+		}
+
+	} );
+
+} );
+
 const nearestFaceMeshes = new Map<TetrahedralMesh, TetrahedralMesh>();
 
 /** The same probes with `outside: 'nearestFace'` (cached). */
