@@ -281,7 +281,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 
 	} );
 
-	it( 'a mesh with zero normals (normalize → NaN on the GPU) gets the direction-free part of the probe light, not NaN/black — object, vertex SH and texture modes', () => {
+	it( 'a mesh with zero normals (normalize → NaN on the GPU) gets the direction-free part of the probe light, not NaN/black — vertex SH and texture modes (the object mode, like three\'s LightProbe, has no guard: it would cost its frame time)', () => {
 
 		// Probes holding L00 only: E is the same for every normal, so the direction-free fallback
 		// must render what a mesh with proper normals renders.
@@ -294,16 +294,16 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 		const want = pixel( render( reference ), camera, 0, 0 );
 		volume.remove( reference );
 		expect( Math.max( ...want ) ).toBeGreaterThan( 40 );
-		for ( const mode of [ 'object', 'vertex', 'texture' ] as const ) {
+		for ( const mode of [ 'vertex', 'texture' ] as const ) {
 
 			const floor = floorMesh();
 			( floor.geometry.getAttribute( 'normal' ).array as Float32Array ).fill( 0 );
 			volume.add( floor, { mode, vertexOutput: 'sh' } );
 			volume.update();
 			const got = pixel( render( floor ), camera, 0, 0 );
-			// Measured: object mode 152/168/182 against 156/173/188 (black, 0/0/0, before the shaders
-			// guarded the normal). The few percent left are three's own normal-dependent terms (its
-			// energy compensation uses dot( normal, view ), here NaN), not the probe light.
+			// Measured (with the guard in the object mode too, since removed): 152/168/182 against
+			// 156/173/188, and black (0/0/0) without it. The few percent left are three's own
+			// normal-dependent terms (its energy compensation uses dot( normal, view ), here NaN).
 			for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ), `${mode} mode, channel ${c}` ).toBeLessThanOrEqual( 0.05 * want[ c ] );
 			volume.remove( floor );
 			floor.geometry.dispose();
