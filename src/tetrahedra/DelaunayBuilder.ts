@@ -62,7 +62,9 @@ export class DelaunayBuilder {
 	private freeList: Int32Array;
 	private freeCount = 0;
 	private stamp = 0;
-	private random = 0x2545F491;
+	// The walk's xorshift state, in a typed array: as a plain field it would start as a small
+	// integer and turn into a double on the first step, changing the instances' hidden class.
+	private random = Int32Array.of( 0x2545F491 );
 
 	// Per-insertion scratch, grown on demand.
 	private stack = new Int32Array( 256 );
@@ -207,7 +209,7 @@ export class DelaunayBuilder {
 	 */
 	locate( q: number ): number {
 
-		const v = this.vertices, adj = this.adjacency, p = this.p;
+		const v = this.vertices, adj = this.adjacency, p = this.p, random = this.random;
 		let t = this.last;
 		if ( t >= this.used || v[ 4 * t ] === FREE ) t = 0;
 		while ( v[ 4 * t ] === FREE ) t ++;
@@ -220,8 +222,10 @@ export class DelaunayBuilder {
 		let previous = - 1;
 		walk: for ( ;; ) {
 
-			this.random ^= this.random << 13; this.random ^= this.random >>> 17; this.random ^= this.random << 5;
-			const offset = this.random & 3;
+			let r = random[ 0 ];
+			r ^= r << 13; r ^= r >>> 17; r ^= r << 5;
+			random[ 0 ] = r;
+			const offset = r & 3;
 			const k = 4 * t;
 			const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 			for ( let s = 0; s < 4; s ++ ) {
@@ -294,31 +298,53 @@ export class DelaunayBuilder {
 		const outStamp = inStamp + 1;
 
 		// Flood the conflict region (connected, star-shaped from q) and collect its boundary faces.
-		const adj = this.adjacency;
+		// The scratch arrays live in locals (written back when grown) to keep the loop free of
+		// property loads; finite cells call inSphere directly, ghosts go through inConflict.
+		const adj = this.adjacency, v = this.vertices, p = this.p;
+		let stack = this.stack, cavity = this.cavity, boundary = this.boundary;
 		let stackSize = 0, cavitySize = 0, boundarySize = 0;
 		mark[ start ] = inStamp;
-		this.stack[ stackSize ++ ] = start;
+		stack[ stackSize ++ ] = start;
 		while ( stackSize > 0 ) {
 
-			const t = this.stack[ -- stackSize ];
-			if ( cavitySize === this.cavity.length ) this.cavity = growInt32( this.cavity, cavitySize * 2 );
-			this.cavity[ cavitySize ++ ] = t;
+			const t = stack[ -- stackSize ];
+			if ( cavitySize === cavity.length ) this.cavity = cavity = growInt32( cavity, cavitySize * 2 );
+			cavity[ cavitySize ++ ] = t;
+			const t4 = 4 * t;
 			for ( let i = 0; i < 4; i ++ ) {
 
-				const u = adj[ 4 * t + i ] >> 2;
+				const u = adj[ t4 + i ] >> 2;
 				const m = mark[ u ];
 				if ( m === inStamp ) continue;
-				if ( m !== outStamp && this.inConflict( u, q ) ) {
+				let conflict = false;
+				if ( m !== outStamp ) {
+
+					const k = 4 * u;
+					const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
+					if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
+
+						const s = inSphere( p, a, b, c, d, q );
+						conflict = s !== 0 ? s > 0 : inSphereTieBreak( p, a, b, c, d, q ) > 0;
+
+					} else {
+
+						conflict = this.inConflict( u, q );
+
+					}
+
+				}
+
+				if ( conflict ) {
 
 					mark[ u ] = inStamp;
-					if ( stackSize === this.stack.length ) this.stack = growInt32( this.stack, stackSize * 2 );
-					this.stack[ stackSize ++ ] = u;
+					if ( stackSize === stack.length ) this.stack = stack = growInt32( stack, stackSize * 2 );
+					stack[ stackSize ++ ] = u;
 
 				} else {
 
 					mark[ u ] = outStamp;
-					if ( boundarySize === this.boundary.length ) this.boundary = growInt32( this.boundary, boundarySize * 2 );
-					this.boundary[ boundarySize ++ ] = 4 * t + i;
+					if ( boundarySize === boundary.length ) this.boundary = boundary = growInt32( boundary, boundarySize * 2 );
+					boundary[ boundarySize ++ ] = t4 + i;
 
 				}
 
@@ -345,21 +371,25 @@ export class DelaunayBuilder {
 		const v = this.vertices;
 		const adj = this.adjacency;
 		if ( this.created.length < boundarySize ) this.created = new Int32Array( boundarySize * 2 );
+		const created = this.created, boundary = this.boundary;
 		const mask = this.prepareEdgeTable( boundarySize * 3 ) - 1;
 		const edgeStamp = ++ this.stamp;
 		const keyA = this.edgeKeyA, keyB = this.edgeKeyB, value = this.edgeValue, used = this.edgeStamp;
+		// Slots as `allocate` hands them out (free list first, LIFO), inlined: `reserve` made room.
+		const freeList = this.freeList;
+		let freeCount = this.freeCount;
 		for ( let f = 0; f < boundarySize; f ++ ) {
 
-			const face = this.boundary[ f ];
+			const face = boundary[ f ];
 			const t = face >> 2, i = face & 3;
 			const outside = adj[ face ];
-			const n = this.allocate();
-			const k = 4 * n;
-			for ( let j = 0; j < 4; j ++ ) v[ k + j ] = v[ 4 * t + j ];
+			const n = freeCount > 0 ? freeList[ -- freeCount ] : this.used ++;
+			const k = 4 * n, t4 = 4 * t;
+			v[ k ] = v[ t4 ]; v[ k + 1 ] = v[ t4 + 1 ]; v[ k + 2 ] = v[ t4 + 2 ]; v[ k + 3 ] = v[ t4 + 3 ];
 			v[ k + i ] = q;
 			adj[ k + i ] = outside;
 			adj[ outside ] = k + i;
-			this.created[ f ] = n;
+			created[ f ] = n;
 
 			// The three faces through q are shared with other new cells; pair them by the edge they
 			// have besides q (the two slots other than i and j).
@@ -401,8 +431,27 @@ export class DelaunayBuilder {
 
 		}
 
-		for ( let c = 0; c < cavitySize; c ++ ) this.release( this.cavity[ c ] );
-		this.last = this.created[ boundarySize - 1 ];
+		// Release the region's cells (as `release` does, in the same order).
+		this.freeCount = freeCount;
+		if ( freeCount + cavitySize > this.freeList.length ) {
+
+			let length = this.freeList.length;
+			while ( length < freeCount + cavitySize ) length *= 2;
+			this.freeList = growInt32( this.freeList, length );
+
+		}
+
+		const list = this.freeList, cavity = this.cavity;
+		for ( let c = 0; c < cavitySize; c ++ ) {
+
+			const t = cavity[ c ];
+			list[ freeCount ++ ] = t;
+			v[ 4 * t ] = FREE;
+
+		}
+
+		this.freeCount = freeCount;
+		this.last = created[ boundarySize - 1 ];
 
 	}
 
@@ -430,6 +479,26 @@ export class DelaunayBuilder {
 
 	}
 
+	/**
+	 * Drops the storage of a builder that is done (after `finish`) and keeps the empty instance.
+	 * The optimized code of the builder's methods depends on its instances' hidden class, which V8
+	 * reaches only through weak transitions: once the last builder is collected, a full GC discards
+	 * that code ("weak objects" deoptimization) and the next triangulation starts unoptimized
+	 * (about a third slower at 10k points). A used instance has the final hidden class; keeping an
+	 * emptied one (a few hundred bytes) keeps the class, and so the code, alive.
+	 */
+	retire(): void {
+
+		const empty = new Int32Array( 0 );
+		this.p = new Float64Array( 0 );
+		this.vertices = this.adjacency = this.mark = this.freeList = empty;
+		this.cavity = this.boundary = this.created = this.stack = empty;
+		this.edgeKeyA = this.edgeKeyB = this.edgeValue = this.edgeStamp = empty;
+		this.used = this.capacity = this.freeCount = this.cavitySize = this.boundarySize = this.last = 0;
+		shapeKeeper = this;
+
+	}
+
 	/** Compacts the finite cells into the output arrays. */
 	finish(): { tetrahedra: Uint32Array; neighbors: Int32Array } {
 
@@ -438,7 +507,9 @@ export class DelaunayBuilder {
 		let count = 0;
 		for ( let t = 0; t < this.used; t ++ ) {
 
-			if ( v[ 4 * t ] !== FREE && ! this.isGhost( t ) ) index[ t ] = count ++;
+			const k = 4 * t;
+			// FREE is also negative, so one test per vertex rules out released slots and ghosts.
+			if ( v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ) index[ t ] = count ++;
 
 		}
 
@@ -471,3 +542,6 @@ export function growInt32( array: Int32Array, length: number ): Int32Array<Array
 	return grown;
 
 }
+
+// See DelaunayBuilder.retire.
+let shapeKeeper: DelaunayBuilder | null = null;

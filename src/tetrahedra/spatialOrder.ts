@@ -28,46 +28,39 @@ export function mulberry32( seed: number ): () => number {
  */
 export function hilbertIndex3( x: number, y: number, z: number, bits: number ): number {
 
-	const X = [ x, y, z ];
+	// Scalars X0, X1, X2 instead of an array (no allocation per point), and masks instead of
+	// branches: the tested bits are random, so branches would be mispredicted half of the time.
+	let X0 = x, X1 = y, X2 = z;
 	// Inverse undo of the Gray code, from the top bit down.
-	for ( let q = 1 << ( bits - 1 ); q > 1; q >>>= 1 ) {
+	for ( let b = bits - 1; b > 0; b -- ) {
 
-		const p = q - 1;
-		for ( let i = 0; i < 3; i ++ ) {
-
-			if ( X[ i ] & q ) {
-
-				X[ 0 ] ^= p;
-
-			} else {
-
-				const t = ( X[ 0 ] ^ X[ i ] ) & p;
-				X[ 0 ] ^= t;
-				X[ i ] ^= t;
-
-			}
-
-		}
+		const p = ( 1 << b ) - 1;
+		// For each axis i: bit b set → invert the low bits of X0; clear → exchange them between X0 and X[ i ].
+		X0 ^= p & - ( ( X0 >>> b ) & 1 ); // i = 0: the exchange with itself does nothing
+		let m = - ( ( X1 >>> b ) & 1 );
+		let t = ( X0 ^ X1 ) & p & ~ m;
+		X0 ^= ( p & m ) | t;
+		X1 ^= t;
+		m = - ( ( X2 >>> b ) & 1 );
+		t = ( X0 ^ X2 ) & p & ~ m;
+		X0 ^= ( p & m ) | t;
+		X2 ^= t;
 
 	}
 
 	// Gray encode.
-	X[ 1 ] ^= X[ 0 ];
-	X[ 2 ] ^= X[ 1 ];
+	X1 ^= X0;
+	X2 ^= X1;
 	let t = 0;
-	for ( let q = 1 << ( bits - 1 ); q > 1; q >>>= 1 ) {
+	for ( let b = bits - 1; b > 0; b -- ) t ^= ( ( 1 << b ) - 1 ) & - ( ( X2 >>> b ) & 1 );
 
-		if ( X[ 2 ] & q ) t ^= q - 1;
-
-	}
-
-	X[ 0 ] ^= t; X[ 1 ] ^= t; X[ 2 ] ^= t;
+	X0 ^= t; X1 ^= t; X2 ^= t;
 
 	// Interleave the transposed bits into one index, most significant first.
 	let index = 0;
 	for ( let b = bits - 1; b >= 0; b -- ) {
 
-		index = index * 8 + ( ( ( X[ 0 ] >>> b ) & 1 ) << 2 ) + ( ( ( X[ 1 ] >>> b ) & 1 ) << 1 ) + ( ( X[ 2 ] >>> b ) & 1 );
+		index = index * 8 + ( ( ( X0 >>> b ) & 1 ) << 2 ) + ( ( ( X1 >>> b ) & 1 ) << 1 ) + ( ( X2 >>> b ) & 1 );
 
 	}
 

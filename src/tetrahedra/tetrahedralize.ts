@@ -75,7 +75,9 @@ export class DegenerateInputError extends Error {
 export function tetrahedralize( points: ArrayLike<number>, options: TetrahedralizeOptions = {} ): Tetrahedralization {
 
 	const { builder, duplicates } = buildDelaunay( 'tetrahedralize', points, options );
-	return { ...builder.finish(), duplicates };
+	const result = { ...builder.finish(), duplicates };
+	builder.retire();
+	return result;
 
 }
 
