@@ -1,6 +1,6 @@
 import { BufferAttribute, InterleavedBuffer, InterleavedBufferAttribute, Matrix3, type BufferGeometry, type Material, type Mesh } from 'three';
 import { blendSH } from '../interpolation/blendSH.js';
-import { IRRADIANCE_C1, IRRADIANCE_C2, IRRADIANCE_C3, IRRADIANCE_C4, IRRADIANCE_C5 } from '../sh/SHBasis.js';
+import { irradianceAt } from '../sh/irradiance.js';
 import { assertProbeField, trackSH, type ProbeField } from './ProbeField.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 
@@ -243,16 +243,7 @@ export class ProbeVertexLighting {
 				let z = n[ 2 ] * nx0 + n[ 5 ] * ny0 + n[ 8 ] * nz0;
 				const length = Math.sqrt( x * x + y * y + z * z );
 				if ( length > 0 ) { x /= length; y /= length; z /= length; }
-				// E(n) with three's getIrradianceAt constants (Ramamoorthi & Hanrahan), per channel.
-				const b0 = IRRADIANCE_C4, b1 = 2 * IRRADIANCE_C2 * y, b2 = 2 * IRRADIANCE_C2 * z, b3 = 2 * IRRADIANCE_C2 * x;
-				const b4 = 2 * IRRADIANCE_C1 * x * y, b5 = 2 * IRRADIANCE_C1 * y * z, b6 = IRRADIANCE_C3 * z * z - IRRADIANCE_C5;
-				const b7 = 2 * IRRADIANCE_C1 * x * z, b8 = IRRADIANCE_C1 * ( x * x - y * y );
-				for ( let c = 0; c < 3; c ++ ) {
-
-					out[ 3 * i + c ] = b0 * _sh[ c ] + b1 * _sh[ 3 + c ] + b2 * _sh[ 6 + c ] + b3 * _sh[ 9 + c ] + b4 * _sh[ 12 + c ]
-						+ b5 * _sh[ 15 + c ] + b6 * _sh[ 18 + c ] + b7 * _sh[ 21 + c ] + b8 * _sh[ 24 + c ];
-
-				}
+				irradianceAt( _sh, 0, x, y, z, out, 3 * i );
 
 			}
 

@@ -44,7 +44,18 @@ export function evaluateIrradiance<T extends WritableArrayLike = Float32Array>( 
 	const out = ( target ?? new Float32Array( 3 ) ) as T;
 	assertOutput( where, 'target', out, 3 );
 
-	const x = direction[ 0 ], y = direction[ 1 ], z = direction[ 2 ];
+	irradianceAt( sh, shOffset, direction[ 0 ], direction[ 1 ], direction[ 2 ], out, 0 );
+	return out;
+
+}
+
+/**
+ * {@link evaluateIrradiance} without argument checks, for loops over many points whose arrays were
+ * validated once (per-vertex lighting): E(n) for the unit normal (x, y, z) of the probe at
+ * `shOffset`, written to `out[ outOffset … outOffset + 2 ]`. Internal (not exported by the package).
+ */
+export function irradianceAt( sh: ArrayLike<number>, shOffset: number, x: number, y: number, z: number, out: WritableArrayLike, outOffset: number ): void {
+
 	const c0 = IRRADIANCE_C4;
 	const c1 = 2 * IRRADIANCE_C2 * y;
 	const c2 = 2 * IRRADIANCE_C2 * z;
@@ -54,8 +65,7 @@ export function evaluateIrradiance<T extends WritableArrayLike = Float32Array>( 
 	const c6 = IRRADIANCE_C3 * z * z - IRRADIANCE_C5;
 	const c7 = 2 * IRRADIANCE_C1 * x * z;
 	const c8 = IRRADIANCE_C1 * ( x * x - y * y );
-	weightedSum( sh, shOffset, c0, c1, c2, c3, c4, c5, c6, c7, c8, out );
-	return out;
+	weightedSum( sh, shOffset, c0, c1, c2, c3, c4, c5, c6, c7, c8, out, outOffset );
 
 }
 
@@ -222,12 +232,12 @@ function assertComponent( where: string, name: string, axis: string, value: unkn
 
 }
 
-function weightedSum( sh: ArrayLike<number>, o: number, c0: number, c1: number, c2: number, c3: number, c4: number, c5: number, c6: number, c7: number, c8: number, out: WritableArrayLike ): void {
+function weightedSum( sh: ArrayLike<number>, o: number, c0: number, c1: number, c2: number, c3: number, c4: number, c5: number, c6: number, c7: number, c8: number, out: WritableArrayLike, outOffset = 0 ): void {
 
 	for ( let channel = 0; channel < 3; channel ++ ) {
 
 		const s = o + channel;
-		out[ channel ] = c0 * sh[ s ] + c1 * sh[ s + 3 ] + c2 * sh[ s + 6 ] + c3 * sh[ s + 9 ]
+		out[ outOffset + channel ] = c0 * sh[ s ] + c1 * sh[ s + 3 ] + c2 * sh[ s + 6 ] + c3 * sh[ s + 9 ]
 			+ c4 * sh[ s + 12 ] + c5 * sh[ s + 15 ] + c6 * sh[ s + 18 ] + c7 * sh[ s + 21 ] + c8 * sh[ s + 24 ];
 
 	}
