@@ -17,11 +17,9 @@ import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import type { Browser, Page } from 'puppeteer-core';
-import type { ViteDevServer } from 'vite';
 import { evaluateIrradiance } from '../../src/sh/index.js';
-import { assetsFolder, assetsPlugin } from '../assetsPlugin.mjs';
-import { CHROMIUM, CHROMIUM_ARGS, fromBase64 } from '../experiment/browser.js';
+import { assetsFolder } from '../assetsPlugin.mjs';
+import { fromBase64, openScriptPage, type ScriptPage } from '../experiment/browser.js';
 import { CONFIGS } from '../experiment/config.js';
 import type { BounceAnswer, BounceApi, BounceRequest, LoadedBounceScene } from './page.js';
 
@@ -199,52 +197,11 @@ async function main(): Promise<number> {
 
 	const runStart = performance.now();
 	const log = ( message: string ) => console.log( `[${( ( performance.now() - runStart ) / 1000 ).toFixed( 0 ).padStart( 4 )} s] ${message}` );
-	if ( ! existsSync( CHROMIUM ) ) { console.error( `bounces: no Chromium at ${CHROMIUM}: run scripts/setup.sh, or set CHROMIUM_PATH` ); return 1; }
-	const { createServer } = await import( 'vite' );
-	const { default: puppeteer } = await import( 'puppeteer-core' );
-	const server: ViteDevServer = await createServer( {
-		configFile: false, root: ROOT, logLevel: 'error', plugins: [ assetsPlugin() ],
-		resolve: { alias: { 'three-capture-lighting': resolve( ROOT, 'src/index.ts' ), '@scenes': resolve( ROOT, 'scenes' ) } },
-		// No file watching or HMR: edits elsewhere in the repository must not reload the page mid-run.
-		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null },
-		optimizeDeps: { noDiscovery: true, include: [] },
-	} );
-	let browser: Browser | null = null;
+	let session: ScriptPage<BounceApi> | null = null;
 	try {
 
-		await server.listen();
-		browser = await puppeteer.launch( { executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 3_600_000 } );
-		const page: Page = await browser.newPage();
-		const errors: string[] = [];
-		page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
-		page.on( 'console', ( message ) => {
-
-			const text = message.text();
-			if ( text.startsWith( '[bounces]' ) ) log( text.slice( 10 ) );
-			else if ( message.type() === 'error' ) errors.push( text );
-
-		} );
-		await page.goto( server.resolvedUrls!.local[ 0 ] + 'scripts/bounces/page.html', { waitUntil: 'load' } );
-		await page.waitForFunction( () => ( window as unknown as { bouncesReady?: boolean } ).bouncesReady === true, { timeout: 120_000 } ).catch( ( error ) => {
-
-			throw new Error( `the page did not start: ${errors.join( ' | ' ) || ( error as Error ).message}` );
-
-		} );
-		const call = async <K extends keyof BounceApi>( name: K, ...args: Parameters<BounceApi[ K ]> ): Promise<Awaited<ReturnType<BounceApi[ K ]>>> => {
-
-			try {
-
-				return await page.evaluate( ( fn: string, fnArgs: unknown[] ) => ( window as unknown as { bounces: Record<string, ( ...a: unknown[] ) => unknown> } ).bounces[ fn ]( ...fnArgs ), name, args as unknown[] ) as Awaited<ReturnType<BounceApi[ K ]>>;
-
-			} catch ( error ) {
-
-				throw new Error( `${name} failed in the page: ${( error as Error ).message}${errors.length ? ` (page errors: ${errors.join( ' | ' )})` : ''}` );
-
-			}
-
-		};
-
-		const browserVersion = await browser.version();
+		session = await openScriptPage<BounceApi>( 'bounces', log );
+		const { browserVersion, call } = session;
 		log( `${browserVersion}; loading Sibenik` );
 		const scene = await call( 'load', '/assets/' );
 		log( `${scene.info.renderer}; ${scene.info.meshes} meshes, ${scene.info.vertices} vertices; lights ${JSON.stringify( scene.lights )}; stand-in materials ${scene.standInMaterials.length}, glowing ${scene.glowingMaterials.join( ', ' )}` );
@@ -290,8 +247,7 @@ async function main(): Promise<number> {
 
 	} finally {
 
-		await browser?.close().catch( () => undefined );
-		await server.close().catch( () => undefined );
+		await session?.close();
 
 	}
 

@@ -1,7 +1,8 @@
 /**
  * The experiment's GPU: headless Chromium (WebGL2 on SwiftShader unless Chromium is given a GPU)
- * driven by puppeteer-core, serving scripts/experiment/page.html through a Vite dev server over
- * the repository — the same scene modules, loaders and asset route as the demo pages.
+ * driven by puppeteer-core, serving scripts/experiment/page.html (and scripts/bounces/page.html)
+ * through a Vite dev server over the repository — the same scene modules, loaders and asset route
+ * as the demo pages.
  */
 
 import { existsSync } from 'node:fs';
@@ -32,7 +33,23 @@ export interface ExperimentSession {
 
 }
 
-export async function startSession( log: ( message: string ) => void ): Promise<ExperimentSession> {
+/**
+ * A script page open in headless Chromium: `scripts/<name>/page.html`, served by a Vite dev server
+ * over the repository, whose API the page puts on `window[ name ]` (and `window[ name + 'Ready' ]`
+ * once it is set up); its console lines starting with `[name]` are passed to `log`.
+ */
+export interface ScriptPage<Api> {
+
+	browser: Browser;
+	browserVersion: string;
+	/** Calls `window[ name ][ method ]( ...args )` in the page; page errors are added to a failure's message. */
+	call<K extends keyof Api>( method: K, ...args: Api[ K ] extends ( ...a: infer A ) => unknown ? A : never ): Promise<Api[ K ] extends ( ...a: never[] ) => infer R ? Awaited<R> : never>;
+	close(): Promise<void>;
+
+}
+
+/** Opens `scripts/<name>/page.html` (the experiment's and the bounce measurement's pages). */
+export async function openScriptPage<Api>( name: string, log: ( message: string ) => void ): Promise<ScriptPage<Api>> {
 
 	if ( ! existsSync( CHROMIUM ) ) throw new Error( `no Chromium at ${CHROMIUM}: run scripts/setup.sh, or set CHROMIUM_PATH` );
 	const { createServer } = await import( 'vite' );
@@ -52,92 +69,99 @@ export async function startSession( log: ( message: string ) => void ): Promise<
 	const baseUrl = server.resolvedUrls!.local[ 0 ];
 
 	let browser: Browser | null = null;
+	const close = async () => {
+
+		await browser?.close().catch( () => undefined );
+		await server.close().catch( () => undefined );
+
+	};
+
 	try {
 
 		browser = await puppeteer.launch( { executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 3_600_000 } );
 		const page: Page = await browser.newPage();
 		const errors: string[] = [];
+		const prefix = `[${name}]`;
 		page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
 		page.on( 'console', ( message ) => {
 
 			const text = message.text();
-			if ( text.startsWith( '[experiment]' ) ) log( text.slice( 13 ) );
+			if ( text.startsWith( prefix ) ) log( text.slice( prefix.length + 1 ) );
 			else if ( message.type() === 'error' ) errors.push( text );
 
 		} );
-		await page.goto( baseUrl + 'scripts/experiment/page.html', { waitUntil: 'load' } );
-		await page.waitForFunction( () => ( window as unknown as { experimentReady?: boolean } ).experimentReady === true, { timeout: 120_000 } ).catch( ( error ) => {
+		await page.goto( `${baseUrl}scripts/${name}/page.html`, { waitUntil: 'load' } );
+		await page.waitForFunction( `window[ ${JSON.stringify( name + 'Ready' )} ] === true`, { timeout: 120_000 } ).catch( ( error ) => {
 
-			throw new Error( `the experiment page did not start: ${errors.join( ' | ' ) || ( error as Error ).message}` );
+			throw new Error( `the ${name} page did not start: ${errors.join( ' | ' ) || ( error as Error ).message}` );
 
 		} );
 
-		const call = async <K extends keyof ExperimentApi>( name: K, ...args: Parameters<ExperimentApi[ K ]> ): Promise<Awaited<ReturnType<ExperimentApi[ K ]>>> => {
+		const call = async ( method: PropertyKey, ...args: unknown[] ) => {
 
 			try {
 
-				return await page.evaluate( ( fn: string, fnArgs: unknown[] ) => {
+				return await page.evaluate( ( api: string, fn: string, fnArgs: unknown[] ) => {
 
-					const api = ( window as unknown as { experiment: Record<string, ( ...a: unknown[] ) => unknown> } ).experiment;
-					return api[ fn ]( ...fnArgs );
+					const target = ( window as unknown as Record<string, Record<string, ( ...a: unknown[] ) => unknown>> )[ api ];
+					return target[ fn ]( ...fnArgs );
 
-				}, name, args as unknown[] ) as Awaited<ReturnType<ExperimentApi[ K ]>>;
+				}, name, String( method ), args );
 
 			} catch ( error ) {
 
-				throw new Error( `${name} failed in the page: ${( error as Error ).message}${errors.length ? ` (page errors: ${errors.join( ' | ' )})` : ''}` );
+				throw new Error( `${String( method )} failed in the page: ${( error as Error ).message}${errors.length ? ` (page errors: ${errors.join( ' | ' )})` : ''}` );
 
 			}
 
 		};
 
-		const browserVersion = await browser.version();
-		const session: ExperimentSession = {
-			browserVersion,
-			load: ( scene ) => call( 'load', scene, '/assets/' ),
-			async vertexCandidates( options ) {
-
-				return fromBase64( await call( 'vertexCandidates', options ), Float32Array );
-
-			},
-			async capture( positions, settings, label ) {
-
-				const { sh, ms } = await call( 'capture', Array.from( positions ), settings, label );
-				return { sh: fromBase64( sh, Float32Array ), ms };
-
-			},
-			async rasterize( svg, width, height, file ) {
-
-				const plot = await browser!.newPage();
-				try {
-
-					await plot.setViewport( { width, height, deviceScaleFactor: 1 } );
-					await plot.setContent( `<!DOCTYPE html><html><body style="margin:0;background:#fff">${svg}</body></html>` );
-					await plot.screenshot( { path: file as `${string}.png`, clip: { x: 0, y: 0, width, height } } );
-
-				} finally {
-
-					await plot.close();
-
-				}
-
-			},
-			async close() {
-
-				await browser?.close().catch( () => undefined );
-				await server.close().catch( () => undefined );
-
-			},
-		};
-		return session;
+		return { browser, browserVersion: await browser.version(), call: call as ScriptPage<Api>[ 'call' ], close };
 
 	} catch ( error ) {
 
-		await browser?.close().catch( () => undefined );
-		await server.close().catch( () => undefined );
+		await close();
 		throw error;
 
 	}
+
+}
+
+export async function startSession( log: ( message: string ) => void ): Promise<ExperimentSession> {
+
+	const { browser, browserVersion, call, close } = await openScriptPage<ExperimentApi>( 'experiment', log );
+	return {
+		browserVersion,
+		load: ( scene ) => call( 'load', scene, '/assets/' ),
+		async vertexCandidates( options ) {
+
+			return fromBase64( await call( 'vertexCandidates', options ), Float32Array );
+
+		},
+		async capture( positions, settings, label ) {
+
+			const { sh, ms } = await call( 'capture', Array.from( positions ), settings, label );
+			return { sh: fromBase64( sh, Float32Array ), ms };
+
+		},
+		async rasterize( svg, width, height, file ) {
+
+			const plot = await browser.newPage();
+			try {
+
+				await plot.setViewport( { width, height, deviceScaleFactor: 1 } );
+				await plot.setContent( `<!DOCTYPE html><html><body style="margin:0;background:#fff">${svg}</body></html>` );
+				await plot.screenshot( { path: file as `${string}.png`, clip: { x: 0, y: 0, width, height } } );
+
+			} finally {
+
+				await plot.close();
+
+			}
+
+		},
+		close,
+	};
 
 }
 
