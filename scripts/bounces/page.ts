@@ -14,6 +14,7 @@ import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/index.js';
 import { captureBounces } from '../../src/capture/captureBounces.js';
 import type { SceneHost } from '../../scenes/loadOBJScene.js';
+import { toBase64 } from '../experiment/pageData.js';
 
 /** What `load` returns. */
 export interface LoadedBounceScene {
@@ -149,15 +150,6 @@ const api: BounceApi = {
 	},
 
 };
-
-function toBase64( array: Float32Array ): string {
-
-	const bytes = new Uint8Array( array.buffer, array.byteOffset, array.byteLength );
-	let text = '';
-	for ( let i = 0; i < bytes.length; i += 0x8000 ) text += String.fromCharCode( ...bytes.subarray( i, i + 0x8000 ) );
-	return btoa( text );
-
-}
 
 ( window as unknown as { bounces: BounceApi } ).bounces = api;
 ( window as unknown as { bouncesReady: boolean } ).bouncesReady = true;

@@ -10,6 +10,7 @@ import * as THREE from 'three';
 import { ProbeCapturer, placeFromMeshes } from '../../src/index.js';
 import type { ProbeLayout } from '../../scenes/layout.js';
 import type { SceneHost } from '../../scenes/loadOBJScene.js';
+import { toBase64 } from './pageData.js';
 
 /** A probe grid over a box, as the scene modules define the paper's grid. */
 export interface GridBox { min: number[]; max: number[]; counts: number[] }
@@ -218,15 +219,6 @@ function gatherVisibleTriangles( root: THREE.Object3D ): { triangles: Float32Arr
 	} );
 
 	return { triangles: Float32Array.from( triangles ), sides: Int8Array.from( sides ) };
-
-}
-
-function toBase64( array: Float32Array | Int8Array ): string {
-
-	const bytes = new Uint8Array( array.buffer, array.byteOffset, array.byteLength );
-	let text = '';
-	for ( let i = 0; i < bytes.length; i += 0x8000 ) text += String.fromCharCode( ...bytes.subarray( i, i + 0x8000 ) );
-	return btoa( text );
 
 }
 
