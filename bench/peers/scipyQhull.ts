@@ -4,8 +4,9 @@
  * peer is reported as skipped.
  */
 
-import { execFileSync, spawn } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { runChild, type ChildResult } from './runChild.js';
 
 const SCRIPT = fileURLToPath( new URL( './scipy_delaunay.py', import.meta.url ) );
 
@@ -14,9 +15,7 @@ export const SCIPY_MISSING = 'skipped: SciPy not installed (pip install scipy)';
 
 export const QHULL_TIME_LIMIT_MS = 120_000;
 
-export type QhullResult =
-	| { ok: true, seconds: number[], tetrahedra: number, flat: number, volume: number }
-	| { ok: false, reason: string };
+export type QhullResult = ChildResult<{ seconds: number[], tetrahedra: number, flat: number, volume: number }>;
 
 let versions: { scipy: string, numpy: string, python: string } | null | undefined;
 
@@ -42,30 +41,8 @@ export function scipyVersions(): { scipy: string, numpy: string, python: string 
 /** Triangulates the points of `pointsFile` (float64 xyz) `repeats` times in one Python process. */
 export function runQhull( pointsFile: string, repeats: number, timeLimitMs = QHULL_TIME_LIMIT_MS ): Promise<QhullResult> {
 
-	if ( ! scipyVersions() ) return Promise.resolve( { ok: false, reason: SCIPY_MISSING } );
+	if ( ! scipyVersions() ) return Promise.resolve( { ok: false, reason: SCIPY_MISSING, timedOut: false } );
 
-	return new Promise( ( resolve ) => {
-
-		const child = spawn( 'python3', [ SCRIPT, pointsFile, String( repeats ) ], { stdio: [ 'ignore', 'pipe', 'pipe' ] } );
-		let stdout = '', stderr = '', timedOut = false;
-		child.stdout.on( 'data', ( chunk ) => stdout += chunk );
-		child.stderr.on( 'data', ( chunk ) => stderr += chunk );
-		const timer = setTimeout( () => {
-
-			timedOut = true;
-			child.kill( 'SIGKILL' );
-
-		}, timeLimitMs );
-
-		child.on( 'close', ( code ) => {
-
-			clearTimeout( timer );
-			if ( timedOut ) resolve( { ok: false, reason: `timeout >${timeLimitMs / 1000} s` } );
-			else if ( code !== 0 ) resolve( { ok: false, reason: 'failed: ' + ( stderr.trim().split( '\n' ).pop() || `exit ${code}` ) } );
-			else resolve( { ok: true, ...JSON.parse( stdout ) } );
-
-		} );
-
-	} );
+	return runChild( 'python3', [ SCRIPT, pointsFile, String( repeats ) ], timeLimitMs );
 
 }
