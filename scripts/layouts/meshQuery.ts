@@ -9,7 +9,7 @@
 import { existsSync, readFileSync } from 'node:fs';
 import * as THREE from 'three';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
-import { closestPointOnTriangle } from '../../src/interpolation/closestPointOnTriangle.js';
+import { closestPointOnTriangle } from '../../src/geometry/closestPointOnTriangle.js';
 
 /** All triangles of an OBJ in world space, with their material names. */
 export interface TriangleSoup {

@@ -2,7 +2,7 @@ import { assertArrayLike, assertInteger, assertNumber, assertOutput, assertPoint
 import { tetrahedralize, type Tetrahedralization, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
 import { orient } from '../tetrahedra/predicates.js';
 import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
-import { closestPointOnTriangle } from './closestPointOnTriangle.js';
+import { closestPointOnTriangle } from '../geometry/closestPointOnTriangle.js';
 import { OuterCells } from './OuterCells.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 

@@ -1,5 +1,5 @@
 import { assertNumber, assertPoints } from '../validate.js';
-import { TriangleBVH } from './TriangleBVH.js';
+import { TriangleBVH } from '../geometry/TriangleBVH.js';
 
 /** {@link classifyPoints}: the point is in open space — a usable probe position. */
 export const OPEN_SPACE = 0;

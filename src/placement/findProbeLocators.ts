@@ -1,8 +1,6 @@
 import { Vector3, type Object3D } from 'three';
-import type { ProbeRole } from '../runtime/LightProbeVolume.js';
+import { PROBE_ROLES, isProbeRole, type ProbeRole } from '../roles.js';
 
-/** The roles a locator can carry (paper 2.1.1), as `LightProbeVolume` accepts them. */
-const ROLES: readonly ProbeRole[] = [ 'sky', 'bounce', 'bleed', 'fill' ];
 
 // "probe" at the start of the name, any case: probe, Probe_sky_01, PROBE.003, probeBounce2.
 const LOCATOR_NAME = /^probe/i;
@@ -83,13 +81,13 @@ function roleFromTag( where: string, object: Object3D, tag: unknown ): ProbeRole
 	else if ( tag !== null && typeof tag === 'object' ) role = ( tag as { role?: unknown } ).role;
 	if ( role === undefined || role === null || role === '' ) return undefined;
 	const normalized = typeof role === 'string' ? role.trim().toLowerCase() : role;
-	if ( ! ROLES.includes( normalized as ProbeRole ) ) {
+	if ( ! isProbeRole( normalized ) ) {
 
-		throw new RangeError( `${where}: object "${object.name}" has userData.probe role ${JSON.stringify( role )}; expected one of ${ROLES.join( ', ' )}.` );
+		throw new RangeError( `${where}: object "${object.name}" has userData.probe role ${JSON.stringify( role )}; expected one of ${PROBE_ROLES.join( ', ' )}.` );
 
 	}
 
-	return normalized as ProbeRole;
+	return normalized;
 
 }
 
@@ -100,7 +98,7 @@ function roleFromName( name: string ): ProbeRole | undefined {
 	for ( const word of words ) {
 
 		const lower = word.toLowerCase();
-		if ( ROLES.includes( lower as ProbeRole ) ) return lower as ProbeRole;
+		if ( isProbeRole( lower ) ) return lower;
 
 	}
 

@@ -2,8 +2,8 @@ import type { Box3, Object3D } from 'three';
 import { assertNumber } from '../validate.js';
 import { candidatesFromVertices } from './candidatesFromVertices.js';
 import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE } from './classifyPoints.js';
-import { gatherWorldGeometry } from './gatherWorldGeometry.js';
-import { TriangleBVH } from './TriangleBVH.js';
+import { gatherWorldGeometry } from '../geometry/gatherWorldGeometry.js';
+import { TriangleBVH } from '../geometry/TriangleBVH.js';
 
 /** Options of {@link placeFromMeshes}. */
 export interface PlaceFromMeshesOptions {

@@ -16,7 +16,7 @@ import type { ProbeField } from './ProbeField.js';
 import { SH_FLOATS, assertArrayLike, assertPoints, assertSH } from '../validate.js';
 import { ProbeZones, type ProbeZoneDefinition } from './ProbeZones.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
-import type { TriangleBVH } from '../placement/TriangleBVH.js';
+import type { TriangleBVH } from '../geometry/TriangleBVH.js';
 
 /** What `LightProbeVolume` accepts as occluders: a ready guard, a BVH, a triangle array, or static three.js objects. */
 export type ProbeOccluders = VisibilityGuard | TriangleBVH | ArrayLike<number> | Object3D | readonly Object3D[];

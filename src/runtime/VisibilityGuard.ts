@@ -1,7 +1,7 @@
 import type { Object3D } from 'three';
-import { TriangleBVH, hitsBox } from '../placement/TriangleBVH.js';
-import { gatherWorldGeometry } from '../placement/gatherWorldGeometry.js';
-import { intersectRayTriangle } from '../placement/intersectRayTriangle.js';
+import { TriangleBVH, hitsBox } from '../geometry/TriangleBVH.js';
+import { gatherWorldGeometry } from '../geometry/gatherWorldGeometry.js';
+import { intersectRayTriangle } from '../geometry/intersectRayTriangle.js';
 import { assertArrayLike, assertNumber } from '../validate.js';
 
 // Hits this close to either end of a segment (in segment-parameter units) do not count: a probe or

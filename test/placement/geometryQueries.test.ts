@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { BoxGeometry, SphereGeometry, TorusGeometry } from 'three';
-import { intersectRayTriangle } from '../../src/placement/intersectRayTriangle.js';
-import { TriangleBVH } from '../../src/placement/TriangleBVH.js';
+import { intersectRayTriangle } from '../../src/geometry/intersectRayTriangle.js';
+import { TriangleBVH } from '../../src/geometry/TriangleBVH.js';
 import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, PARITY_RAY_DIRECTIONS } from '../../src/placement/classifyPoints.js';
-import { closestPointOnTriangle } from '../../src/interpolation/closestPointOnTriangle.js';
+import { closestPointOnTriangle } from '../../src/geometry/closestPointOnTriangle.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance, sphereDistance, torusDistance, trianglesOf } from './helpers.js';
 

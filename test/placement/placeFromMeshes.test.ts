@@ -4,7 +4,7 @@ import {
 	SphereGeometry, TorusGeometry, TorusKnotGeometry, Vector3,
 } from 'three';
 import { placeFromMeshes } from '../../src/placement/placeFromMeshes.js';
-import { gatherWorldGeometry } from '../../src/placement/gatherWorldGeometry.js';
+import { gatherWorldGeometry } from '../../src/geometry/gatherWorldGeometry.js';
 import { boxDistance, sphereDistance, torusDistance } from './helpers.js';
 
 const material = new MeshBasicMaterial();

@@ -27,8 +27,8 @@ describe( 'placement module split', () => {
 
 	// The math and geometry must run in plain Node (tools, workers, tests) without three.js; only
 	// the glue that reads Object3D trees may load it.
-	const pure = [ 'placeGrid', 'candidatesFromVertices', 'intersectRayTriangle', 'TriangleBVH', 'classifyPoints', 'irradianceError', 'reduceProbes' ];
-	const glue = [ 'gatherWorldGeometry', 'placeFromMeshes', 'findProbeLocators' ];
+	const pure = [ 'placeGrid', 'candidatesFromVertices', 'classifyPoints', 'irradianceError', 'reduceProbes' ];
+	const glue = [ 'placeFromMeshes', 'findProbeLocators' ];
 
 	for ( const name of pure ) {
 

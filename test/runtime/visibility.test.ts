@@ -9,7 +9,7 @@ import { describe, expect, it, vi } from 'vitest';
 import * as THREE from 'three';
 import { VisibilityGuard } from '../../src/runtime/VisibilityGuard.js';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
-import { TriangleBVH } from '../../src/placement/TriangleBVH.js';
+import { TriangleBVH } from '../../src/geometry/TriangleBVH.js';
 import { GridInterpolator } from '../../src/interpolation/GridInterpolator.js';
 import type { ProbeInterpolator } from '../../src/interpolation/ProbeInterpolator.js';
 import { irradianceMatrices } from '../../src/sh/index.js';

@@ -1,5 +1,5 @@
 import { assertFinite, assertArrayLike, assertNumber } from '../validate.js';
-import { closestPointOnTriangle } from '../interpolation/closestPointOnTriangle.js';
+import { closestPointOnTriangle } from './closestPointOnTriangle.js';
 import { intersectRayTriangle } from './intersectRayTriangle.js';
 
 // Triangles per leaf: small leaves mean more box tests but fewer triangle tests; 4 is the usual
