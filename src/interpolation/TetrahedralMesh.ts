@@ -1,9 +1,8 @@
 import { assertArrayLike, assertInteger, assertNumber, assertOutput, assertPoints } from '../validate.js';
-import { tetrahedralize, type Tetrahedralization, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
-import { orient } from '../tetrahedra/predicates.js';
-import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
+import { tetrahedralize, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
 import { closestPointOnTriangle } from '../geometry/closestPointOnTriangle.js';
 import { OuterCells } from './OuterCells.js';
+import { checkOrientations, computeInverseMatrices } from './inverseMatrices.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 /**
@@ -24,14 +23,6 @@ export interface TetrahedralMeshOptions extends TetrahedralizeOptions {
 
 }
 
-/** Options of {@link TetrahedralMesh.fromDynamic}. */
-export interface FromDynamicOptions {
-
-	/** Behaviour outside the convex hull. Default `'outerCells'`. */
-	outside?: OutsideMode;
-
-}
-
 /** Options of {@link TetrahedralMesh.fromTetrahedralization}. */
 export interface FromTetrahedralizationOptions {
 
@@ -43,6 +34,28 @@ export interface FromTetrahedralizationOptions {
 
 }
 
+/**
+ * The arrays of a mesh built elsewhere, for the third constructor argument (internal: used by
+ * {@link TetrahedralMesh.fromTetrahedralization} and `IncrementalTetrahedralMesh`).
+ */
+export interface TetrahedralMeshParts {
+
+	/** Function name for error messages. */
+	where: string;
+
+	/** The mesh's fields of the same names. */
+	positions: Float64Array;
+	tetrahedra: Uint32Array;
+	neighbors: Int32Array;
+	duplicates: Uint32Array;
+	inverseMatrices: Float64Array;
+	hullFaces: Uint32Array;
+	hullFaceTetrahedra: Uint32Array;
+	hullFaceSlots: Uint8Array;
+	outerCells: OuterCells;
+
+}
+
 // Barycentric slack for points on shared faces: a point rounding 1e-12 outside a face still
 // belongs to the tetrahedron, or a walk could bounce between the two cells sharing it.
 const INSIDE_EPSILON = 1e-12;
@@ -51,20 +64,7 @@ const _weights = new Float64Array( 4 );
 const _closest = new Float64Array( 6 );
 const _outer = new Float64Array( 4 );
 
-// Where the last locate() that returned −1 left the mesh: the tetrahedron and the slot of the
-// hull face it stepped out through (−1 when a scan, not a walk, answered).
-let _exitTetrahedron = - 1, _exitSlot = 0;
-
-// Set by fromTetrahedralization for the constructor it calls: the stored arrays to use instead of
-// tetrahedralizing. Module state rather than a constructor argument keeps `new TetrahedralMesh`'s
-// public signature plain.
-let _stored: Tetrahedralization | null = null;
-
-// Set by fromDynamic for the constructor it calls, likewise.
-let _dynamic: DynamicTetrahedralization | null = null;
-
 const FROM = 'TetrahedralMesh.fromTetrahedralization';
-const FROM_DYNAMIC = 'TetrahedralMesh.fromDynamic';
 
 /**
  * Probe positions tetrahedralized for interpolation (paper section 2.4): a 3D Delaunay
@@ -97,35 +97,20 @@ const FROM_DYNAMIC = 'TetrahedralMesh.fromDynamic';
  * blendSH( indices, weights, probeSH, sh );
  * ```
  *
- * Incremental mode ({@link TetrahedralMesh.fromDynamic}): the mesh follows a
- * {@link DynamicTetrahedralization}, and {@link TetrahedralMesh.moveProbe},
- * {@link TetrahedralMesh.addProbe} and {@link TetrahedralMesh.removeProbe} update it locally —
- * the tetrahedralization and the inverse matrices of the changed tetrahedra only; the outer cells
- * are rebuilt over the hull (O(hull faces)) only when the edit changed a hull face. (Rebuilding
- * rather than patching them: their vertex normals are smoothed globally where cells would fold —
- * on 5,000 random probes every rebuild runs those rounds, ~0.3 ms, but only ~10 % of moves touch
- * the hull; on the 85-probe Sponza layout a rebuild is ~50 µs. See bench/incremental.bench.ts.) The array
- * fields (`positions`, `tetrahedra`, `neighbors`, `inverseMatrices`, `hullFaces`,
- * `hullFaceTetrahedra`, `hullFaceSlots`, `outerCells`) are then views replaced by every edit:
- * read them again after one. Probe ids never shift: `probeCount` counts id slots, and a removed
- * probe's id stays, in no tetrahedron ({@link TetrahedralMesh.isActive} is false). Hints kept
- * from before an edit stay safe to pass (any value is a valid start), just slower the first time.
+ * Incremental edits (moving, adding, removing probes) are the subclass
+ * `IncrementalTetrahedralMesh`'s; its array fields are replaced by every edit.
  */
 export class TetrahedralMesh implements ProbeInterpolator {
 
-	/**
-	 * Probe positions, x, y, z per probe (a copy of the constructor argument; in incremental mode a
-	 * view of the dynamic tetrahedralization's, replaced by each edit, removed ids keeping their
-	 * last position).
-	 */
+	/** Probe positions, x, y, z per probe (a copy of the constructor argument; incremental meshes: replaced by each edit). */
 	positions: Float64Array;
 
-	/** Four probe indices per tetrahedron, positively oriented (incremental mode: replaced by each edit). */
+	/** Four probe indices per tetrahedron, positively oriented (incremental meshes: replaced by each edit). */
 	tetrahedra: Uint32Array;
 
 	/**
 	 * `neighbors[4t + i]`: the tetrahedron across the face opposite vertex i of t, or −1 on the hull
-	 * (incremental mode: replaced by each edit).
+	 * (incremental meshes: replaced by each edit).
 	 */
 	neighbors: Int32Array;
 
@@ -135,23 +120,19 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	/**
 	 * Per tetrahedron, the row-major inverse of [p0 − p3, p1 − p3, p2 − p3] (9 floats), so that
 	 * (w0, w1, w2) = inverse · (p − p3) and w3 = 1 − w0 − w1 − w2 (paper eq. in section 2.4).
-	 * Incremental mode: a view of a capacity-doubling store, replaced by each edit.
 	 */
 	inverseMatrices: Float64Array;
 
-	/** Hull triangles, 3 probe indices each, counter-clockwise seen from outside (incremental mode: replaced by each edit). */
+	/** Hull triangles, 3 probe indices each, counter-clockwise seen from outside. */
 	hullFaces: Uint32Array;
 
-	/**
-	 * For each hull triangle, the tetrahedron it belongs to (ascending, except in incremental mode,
-	 * where it is the dynamic tetrahedralization's `hullFaceCells`, replaced by each edit).
-	 */
+	/** For each hull triangle, the tetrahedron it belongs to (ascending, except in incremental meshes). */
 	hullFaceTetrahedra: Uint32Array;
 
-	/** For each hull triangle, the slot (0..3) in its tetrahedron of the vertex opposite it (incremental mode: replaced by each edit). */
+	/** For each hull triangle, the slot (0..3) in its tetrahedron of the vertex opposite it. */
 	hullFaceSlots: Uint8Array;
 
-	/** The outer cells over the hull triangles (cell f extends `hullFaces[3f..3f+2]`; incremental mode: rebuilt when the hull changes). */
+	/** The outer cells over the hull triangles (cell f extends `hullFaces[3f..3f+2]`). */
 	outerCells: OuterCells;
 
 	/** Behaviour outside the convex hull. */
@@ -160,85 +141,44 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	/** Always 4. */
 	readonly weightCount = 4;
 
-	/**
-	 * The dynamic tetrahedralization this mesh follows in incremental mode
-	 * ({@link TetrahedralMesh.fromDynamic}), or null. Edit through the mesh's `moveProbe`,
-	 * `addProbe` and `removeProbe`, not directly: the mesh updates from its `lastEdit`.
-	 */
-	readonly dynamic: DynamicTetrahedralization | null;
-
-	// Incremental mode: capacity-doubling stores behind inverseMatrices and hullFaceSlots, and the
-	// hull face of each (tetrahedron, slot) — hull faces are not sorted by tetrahedron there, so
-	// hullFaceOf cannot binary-search.
-	private inverseStore: Float64Array | null = null;
-	private slotStore: Uint8Array | null = null;
-	private cellHullFace: Int32Array | null = null;
+	// Where the last locate() that returned −1 left the mesh: the tetrahedron and the slot of the
+	// hull face it stepped out through (−1 when a scan, not a walk, answered).
+	private exitTetrahedron = - 1;
+	private exitSlot = 0;
 
 	/**
 	 * @param positions Flat x, y, z per probe; at least 4 probes not all in one plane.
 	 * @param options Behaviour outside the hull, and options passed to {@link tetrahedralize}.
+	 * @param parts Internal: the arrays of a mesh already built (then `positions` is not read).
 	 */
-	constructor( positions: ArrayLike<number>, options: TetrahedralMeshOptions = {} ) {
+	constructor( positions: ArrayLike<number>, options: TetrahedralMeshOptions = {}, parts?: TetrahedralMeshParts ) {
 
-		const stored = _stored, dynamic = _dynamic;
-		_stored = null;
-		_dynamic = null;
+		const where = parts ? parts.where : 'TetrahedralMesh';
 		const outside = this.outside = options.outside ?? 'outerCells';
-		if ( outside !== 'outerCells' && outside !== 'nearestFace' ) throw new RangeError( `${dynamic ? FROM_DYNAMIC : 'TetrahedralMesh'}: options.outside must be 'outerCells' or 'nearestFace', got ${String( outside )}.` );
-		this.dynamic = dynamic;
-		if ( dynamic !== null ) {
+		if ( outside !== 'outerCells' && outside !== 'nearestFace' ) {
 
-			this.positions = dynamic.positions;
-			this.tetrahedra = dynamic.tetrahedra;
-			this.neighbors = dynamic.neighbors;
-			this.duplicates = dynamic.duplicates;
-			this.hullFaces = dynamic.hullFaces;
-			this.hullFaceTetrahedra = dynamic.hullFaceCells;
-			this.inverseMatrices = this.inverseStore = new Float64Array( 0 );
-			this.hullFaceSlots = this.slotStore = new Uint8Array( 0 );
-			this.cellHullFace = new Int32Array( 0 );
-			this.outerCells = this.syncEdit( true )!;
-			return;
+			throw new RangeError( `${where}: options.outside must be 'outerCells' or 'nearestFace', got ${String( outside )}.` );
 
 		}
 
-		if ( stored === null ) assertPoints( 'TetrahedralMesh', 'positions', positions );
-		this.positions = Float64Array.from( positions );
-		const { tetrahedra, neighbors, duplicates } = stored ?? tetrahedralize( this.positions, options );
-		this.tetrahedra = tetrahedra;
-		this.neighbors = neighbors;
-		this.duplicates = duplicates;
-		this.inverseMatrices = computeInverseMatrices( this.positions, tetrahedra, stored !== null );
+		if ( parts === undefined ) {
 
-		// Hull faces: count first, so the arrays are allocated once (100,000-probe volumes load here).
-		const count = tetrahedra.length / 4;
-		let hullCount = 0;
-		for ( let i = 0; i < neighbors.length; i ++ ) if ( neighbors[ i ] === - 1 ) hullCount ++;
-		const faces = this.hullFaces = new Uint32Array( 3 * hullCount );
-		const owners = this.hullFaceTetrahedra = new Uint32Array( hullCount );
-		const slots = this.hullFaceSlots = new Uint8Array( hullCount );
-		let o = 0;
-		for ( let t = 0; t < count; t ++ ) {
-
-			for ( let i = 0; i < 4; i ++ ) {
-
-				if ( neighbors[ 4 * t + i ] !== - 1 ) continue;
-				// The face without vertex i, ordered so that vertex i is on its negative side: for a
-				// positive tetrahedron that makes it counter-clockwise seen from outside.
-				const k = 4 * t, f = 3 * o;
-				const v0 = tetrahedra[ k ], v1 = tetrahedra[ k + 1 ], v2 = tetrahedra[ k + 2 ], v3 = tetrahedra[ k + 3 ];
-				if ( i === 0 ) { faces[ f ] = v1; faces[ f + 1 ] = v2; faces[ f + 2 ] = v3; }
-				else if ( i === 1 ) { faces[ f ] = v0; faces[ f + 1 ] = v3; faces[ f + 2 ] = v2; }
-				else if ( i === 2 ) { faces[ f ] = v0; faces[ f + 1 ] = v1; faces[ f + 2 ] = v3; }
-				else { faces[ f ] = v0; faces[ f + 1 ] = v2; faces[ f + 2 ] = v1; }
-				owners[ o ] = t; slots[ o ] = i;
-				o ++;
-
-			}
+			assertPoints( where, 'positions', positions );
+			const p = Float64Array.from( positions );
+			const { tetrahedra, neighbors, duplicates } = tetrahedralize( p, options );
+			parts = meshParts( where, p, tetrahedra, neighbors, duplicates );
 
 		}
 
-		this.outerCells = new OuterCells( this.positions, faces, stored ? FROM : 'TetrahedralMesh' );
+		this.positions = parts.positions;
+		this.tetrahedra = parts.tetrahedra;
+		this.neighbors = parts.neighbors;
+		this.duplicates = parts.duplicates;
+		this.inverseMatrices = parts.inverseMatrices;
+		this.hullFaces = parts.hullFaces;
+		this.hullFaceTetrahedra = parts.hullFaceTetrahedra;
+		this.hullFaceSlots = parts.hullFaceSlots;
+		this.outerCells = parts.outerCells;
 
 	}
 
@@ -300,196 +240,23 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 		}
 
+		const p = Float64Array.from( positions );
+		checkOrientations( FROM, p, tets );
 		const duplicates = options.duplicates ? Uint32Array.from( options.duplicates ) : new Uint32Array( 0 );
-		_stored = { tetrahedra: tets, neighbors: adjacent, duplicates };
-		try {
-
-			return new TetrahedralMesh( positions, { outside: options.outside } );
-
-		} finally {
-
-			_stored = null;
-
-		}
-
-	}
-
-	/**
-	 * An incremental mesh over a {@link DynamicTetrahedralization} (kept by reference, in its
-	 * current state): {@link TetrahedralMesh.moveProbe}, {@link TetrahedralMesh.addProbe} and
-	 * {@link TetrahedralMesh.removeProbe} then update the mesh locally instead of rebuilding it.
-	 * Interpolation is the same as a mesh built from scratch on the active probes (same Delaunay
-	 * tetrahedralization, same outer cells), with the dynamic tetrahedralization's probe ids.
-	 * @param dynamic The tetrahedralization to follow; edit it only through this mesh from now on.
-	 * @throws TypeError when `dynamic` is not a `DynamicTetrahedralization`.
-	 */
-	static fromDynamic( dynamic: DynamicTetrahedralization, options: FromDynamicOptions = {} ): TetrahedralMesh {
-
-		if ( ! ( dynamic instanceof DynamicTetrahedralization ) ) throw new TypeError( `${FROM_DYNAMIC}: dynamic must be a DynamicTetrahedralization.` );
-		_dynamic = dynamic;
-		try {
-
-			return new TetrahedralMesh( dynamic.positions, { outside: options.outside } );
-
-		} finally {
-
-			_dynamic = null;
-
-		}
-
-	}
-
-	/**
-	 * Moves probe `index` to (x, y, z) (incremental mode): a local removal and insertion in the
-	 * tetrahedralization, then the inverse matrices of the changed tetrahedra, and the outer cells
-	 * when the hull changed. The array fields are replaced: read them again. Nothing changes when
-	 * it throws.
-	 * @throws Error when the mesh is not incremental; RangeError for an inactive index or a
-	 * non-finite coordinate; `DegenerateInputError` when the new position coincides with another
-	 * probe or makes the probes coplanar.
-	 */
-	moveProbe( index: number, x: number, y: number, z: number ): void {
-
-		this.requireDynamic( 'moveProbe' ).move( index, x, y, z );
-		this.syncEdit( false );
-
-	}
-
-	/**
-	 * Adds a probe at (x, y, z) (incremental mode) and returns its id: the next id slot, =
-	 * the previous `probeCount`. Updates locally, as {@link TetrahedralMesh.moveProbe}.
-	 * @throws Error when the mesh is not incremental; RangeError for a non-finite coordinate;
-	 * `DegenerateInputError` when it coincides with an existing probe.
-	 */
-	addProbe( x: number, y: number, z: number ): number {
-
-		const index = this.requireDynamic( 'addProbe' ).insert( x, y, z );
-		this.syncEdit( false );
-		return index;
-
-	}
-
-	/**
-	 * Removes probe `index` (incremental mode). Its id stays (`probeCount` does not change, other
-	 * ids do not shift); it is in no tetrahedron any more and gets no weight.
-	 * @throws Error when the mesh is not incremental; RangeError for an inactive index;
-	 * `DegenerateInputError` when fewer than 4 probes, or only coplanar ones, would remain.
-	 */
-	removeProbe( index: number ): void {
-
-		this.requireDynamic( 'removeProbe' ).remove( index );
-		this.syncEdit( false );
+		return new TetrahedralMesh( p, { outside: options.outside }, meshParts( FROM, p, tets, adjacent, duplicates ) );
 
 	}
 
 	/** Whether probe id `index` is a vertex of the mesh (false for removed ids and merged duplicates). */
 	isActive( index: number ): boolean {
 
-		if ( this.dynamic !== null ) return this.dynamic.isActive( index );
 		if ( ! Number.isInteger( index ) || index < 0 || index >= this.probeCount ) return false;
 		for ( let i = 0; i < this.duplicates.length; i += 2 ) if ( this.duplicates[ i ] === index ) return false;
 		return true;
 
 	}
 
-	private requireDynamic( name: string ): DynamicTetrahedralization {
-
-		if ( this.dynamic === null ) throw new Error( `TetrahedralMesh.${name}: this mesh is not incremental; build it with TetrahedralMesh.fromDynamic( new DynamicTetrahedralization( positions ) ).` );
-		return this.dynamic;
-
-	}
-
-	/**
-	 * Re-reads the dynamic tetrahedralization after an edit (or at construction, `all`): inverse
-	 * matrices of `lastEdit.changedCells` only, slots of the changed hull faces, and the outer cells
-	 * (over the whole hull) when a hull face changed.
-	 * @returns The new outer cells, or null when they were kept.
-	 */
-	private syncEdit( all: boolean ): OuterCells | null {
-
-		const dynamic = this.dynamic!, edit = dynamic.lastEdit;
-		all ||= edit.rebuilt;
-		const p = this.positions = dynamic.positions;
-		const tetrahedra = this.tetrahedra = dynamic.tetrahedra;
-		this.neighbors = dynamic.neighbors;
-		const count = tetrahedra.length / 4;
-
-		let store = this.inverseStore!;
-		if ( store.length < 9 * count ) {
-
-			const grown = new Float64Array( 9 * Math.max( 16, 2 * count ) );
-			if ( ! all ) grown.set( store.subarray( 0, 9 * Math.min( count, edit.previousCellCount ) ) );
-			store = this.inverseStore = grown;
-
-		}
-
-		if ( all ) {
-
-			for ( let t = 0; t < count; t ++ ) writeInverse( p, tetrahedra, t, store );
-
-		} else {
-
-			const changed = edit.changedCells;
-			for ( let i = 0; i < changed.length; i ++ ) writeInverse( p, tetrahedra, changed[ i ], store );
-
-		}
-
-		this.inverseMatrices = store.subarray( 0, 9 * count );
-
-		const faces = this.hullFaces = dynamic.hullFaces, owners = this.hullFaceTetrahedra = dynamic.hullFaceCells;
-		const hullCount = owners.length;
-		let slots = this.slotStore!, lookup = this.cellHullFace!;
-		if ( slots.length < hullCount ) {
-
-			const grown = new Uint8Array( Math.max( 16, 2 * hullCount ) );
-			grown.set( slots );
-			slots = this.slotStore = grown;
-
-		}
-
-		if ( lookup.length < 4 * count ) {
-
-			const grown = new Int32Array( 4 * Math.max( 16, 2 * count ) );
-			grown.set( lookup );
-			lookup = this.cellHullFace = grown;
-
-		}
-
-		const changedFaces = edit.changedHullFaces, n = all ? hullCount : changedFaces.length;
-		for ( let i = 0; i < n; i ++ ) {
-
-			const f = all ? i : changedFaces[ i ], t = owners[ f ], k = 4 * t;
-			const a = faces[ 3 * f ], b = faces[ 3 * f + 1 ], c = faces[ 3 * f + 2 ];
-			let slot = 0;
-			while ( slot < 3 ) {
-
-				const v = tetrahedra[ k + slot ];
-				if ( v !== a && v !== b && v !== c ) break;
-				slot ++;
-
-			}
-
-			slots[ f ] = slot;
-			lookup[ k + slot ] = f;
-
-		}
-
-		this.hullFaceSlots = slots.subarray( 0, hullCount );
-
-		// Outer cells depend on the hull faces, their vertices' positions and normals: unchanged
-		// unless a hull face changed (a moved hull vertex changes all its faces).
-		if ( all || n > 0 || this.outerCells.faces.length !== faces.length ) {
-
-			return this.outerCells = new OuterCells( p, faces, FROM_DYNAMIC );
-
-		}
-
-		this.outerCells.positions = p;
-		return null;
-
-	}
-
-	/** Number of probes (incremental mode: of probe id slots, removed ones included). */
+	/** Number of probes (incremental meshes: of probe id slots, removed ones included). */
 	get probeCount(): number {
 
 		return this.positions.length / 3;
@@ -538,12 +305,12 @@ export class TetrahedralMesh implements ProbeInterpolator {
 			const next = neighbors[ 4 * t + worst ];
 			// Beyond a hull face's plane means outside the (convex) hull; remember the face for the
 			// outer-cell walk.
-			if ( next === - 1 ) { _exitTetrahedron = t; _exitSlot = worst; return - 1; }
+			if ( next === - 1 ) { this.exitTetrahedron = t; this.exitSlot = worst; return - 1; }
 			t = next;
 
 		}
 
-		_exitTetrahedron = - 1;
+		this.exitTetrahedron = - 1;
 		return this.locateByScan( x, y, z );
 
 	}
@@ -626,7 +393,7 @@ export class TetrahedralMesh implements ProbeInterpolator {
 			}
 
 			if ( this.outside === 'nearestFace' ) return this.interpolateNearestFace( x, y, z, indices, weights, false );
-			face = _exitTetrahedron >= 0 ? this.hullFaceOf( _exitTetrahedron, _exitSlot ) : 0;
+			face = this.exitTetrahedron >= 0 ? this.hullFaceOf( this.exitTetrahedron, this.exitSlot ) : 0;
 
 		}
 
@@ -681,9 +448,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	}
 
 	/** The hull face opposite slot `slot` of tetrahedron t (a binary search: hull faces are stored by tetrahedron). */
-	private hullFaceOf( t: number, slot: number ): number {
+	protected hullFaceOf( t: number, slot: number ): number {
 
-		if ( this.cellHullFace !== null ) return this.cellHullFace[ 4 * t + slot ];
 		const owners = this.hullFaceTetrahedra;
 		let lo = 0, hi = owners.length - 1;
 		while ( lo < hi ) {
@@ -727,57 +493,44 @@ export class TetrahedralMesh implements ProbeInterpolator {
 }
 
 /**
- * Per tetrahedron, the inverse of [p0 − p3, p1 − p3, p2 − p3].
- * @param check Throw when a tetrahedron is not positively oriented (stored data; tetrahedralize's
- * own output is positive by construction).
+ * Inverse matrices, hull faces (sorted by tetrahedron) and outer cells of a tetrahedralization.
+ * @param where Function name for the outer cells' messages.
  */
-function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array, check: boolean ): Float64Array {
+function meshParts( where: string, p: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array, duplicates: Uint32Array ): TetrahedralMeshParts {
 
+	const inverseMatrices = computeInverseMatrices( p, tetrahedra );
+
+	// Hull faces: count first, so the arrays are allocated once (100,000-probe volumes load here).
 	const count = tetrahedra.length / 4;
-	const out = new Float64Array( 9 * count );
+	let hullCount = 0;
+	for ( let i = 0; i < neighbors.length; i ++ ) if ( neighbors[ i ] === - 1 ) hullCount ++;
+	const faces = new Uint32Array( 3 * hullCount );
+	const owners = new Uint32Array( hullCount );
+	const slots = new Uint8Array( hullCount );
+	let o = 0;
 	for ( let t = 0; t < count; t ++ ) {
 
-		if ( check ) checkOrientation( p, tetrahedra, t );
-		writeInverse( p, tetrahedra, t, out );
+		for ( let i = 0; i < 4; i ++ ) {
+
+			if ( neighbors[ 4 * t + i ] !== - 1 ) continue;
+			// The face without vertex i, ordered so that vertex i is on its negative side: for a
+			// positive tetrahedron that makes it counter-clockwise seen from outside.
+			const k = 4 * t, f = 3 * o;
+			const v0 = tetrahedra[ k ], v1 = tetrahedra[ k + 1 ], v2 = tetrahedra[ k + 2 ], v3 = tetrahedra[ k + 3 ];
+			if ( i === 0 ) { faces[ f ] = v1; faces[ f + 1 ] = v2; faces[ f + 2 ] = v3; }
+			else if ( i === 1 ) { faces[ f ] = v0; faces[ f + 1 ] = v3; faces[ f + 2 ] = v2; }
+			else if ( i === 2 ) { faces[ f ] = v0; faces[ f + 1 ] = v1; faces[ f + 2 ] = v3; }
+			else { faces[ f ] = v0; faces[ f + 1 ] = v2; faces[ f + 2 ] = v1; }
+			owners[ o ] = t; slots[ o ] = i;
+			o ++;
+
+		}
 
 	}
 
-	return out;
-
-}
-
-/** Throws when stored tetrahedron t is not positively oriented. */
-function checkOrientation( p: Float64Array, tetrahedra: Uint32Array, t: number ): void {
-
-	const i0 = 3 * tetrahedra[ 4 * t ], i1 = 3 * tetrahedra[ 4 * t + 1 ], i2 = 3 * tetrahedra[ 4 * t + 2 ], i3 = 3 * tetrahedra[ 4 * t + 3 ];
-	const a = p[ i0 ] - p[ i3 ], d = p[ i0 + 1 ] - p[ i3 + 1 ], g = p[ i0 + 2 ] - p[ i3 + 2 ];
-	const b = p[ i1 ] - p[ i3 ], e = p[ i1 + 1 ] - p[ i3 + 1 ], h = p[ i1 + 2 ] - p[ i3 + 2 ];
-	const c = p[ i2 ] - p[ i3 ], f = p[ i2 + 1 ] - p[ i3 + 1 ], i = p[ i2 + 2 ] - p[ i3 + 2 ];
-	const det = a * ( e * i - f * h ) - b * ( d * i - f * g ) + c * ( d * h - e * g );
-	// det M = −det[p1 − p0, p2 − p0, p3 − p0]; a rounded det of the wrong sign is settled exactly.
-	if ( ! ( det < 0 ) && orient( p, i0 / 3, i1 / 3, i2 / 3, i3 / 3 ) <= 0 ) {
-
-		throw new Error( `${FROM}: tetrahedron ${t} (probes ${i0 / 3}, ${i1 / 3}, ${i2 / 3}, ${i3 / 3}) is not positively oriented (det[p1 − p0, p2 − p0, p3 − p0] ≤ 0).` );
-
-	}
-
-}
-
-/** Writes the inverse of [p0 − p3, p1 − p3, p2 − p3] of tetrahedron t to `out[9t..9t+8]`. */
-function writeInverse( p: Float64Array, tetrahedra: Uint32Array, t: number, out: Float64Array ): void {
-
-	const i0 = 3 * tetrahedra[ 4 * t ], i1 = 3 * tetrahedra[ 4 * t + 1 ], i2 = 3 * tetrahedra[ 4 * t + 2 ], i3 = 3 * tetrahedra[ 4 * t + 3 ];
-	// Columns of M: p0 − p3, p1 − p3, p2 − p3.
-	const a = p[ i0 ] - p[ i3 ], d = p[ i0 + 1 ] - p[ i3 + 1 ], g = p[ i0 + 2 ] - p[ i3 + 2 ];
-	const b = p[ i1 ] - p[ i3 ], e = p[ i1 + 1 ] - p[ i3 + 1 ], h = p[ i1 + 2 ] - p[ i3 + 2 ];
-	const c = p[ i2 ] - p[ i3 ], f = p[ i2 + 1 ] - p[ i3 + 1 ], i = p[ i2 + 2 ] - p[ i3 + 2 ];
-	// M = [[a, b, c], [d, e, f], [g, h, i]]; inverse by cofactors.
-	const A = e * i - f * h, B = - ( d * i - f * g ), C = d * h - e * g;
-	const det = a * A + b * B + c * C;
-	const s = 1 / det;
-	const k = 9 * t;
-	out[ k ] = A * s; out[ k + 1 ] = - ( b * i - c * h ) * s; out[ k + 2 ] = ( b * f - c * e ) * s;
-	out[ k + 3 ] = B * s; out[ k + 4 ] = ( a * i - c * g ) * s; out[ k + 5 ] = - ( a * f - c * d ) * s;
-	out[ k + 6 ] = C * s; out[ k + 7 ] = - ( a * h - b * g ) * s; out[ k + 8 ] = ( a * e - b * d ) * s;
+	return {
+		where, positions: p, tetrahedra, neighbors, duplicates, inverseMatrices,
+		hullFaces: faces, hullFaceTetrahedra: owners, hullFaceSlots: slots, outerCells: new OuterCells( p, faces, where ),
+	};
 
 }

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { orient3d } from 'robust-predicates';
-import { TetrahedralMesh, blendSH } from '../../src/index.js';
+import { TetrahedralMesh } from '../../src/interpolation/TetrahedralMesh.js';
+import { blendSH } from '../../src/interpolation/blendSH.js';
 import { gridPoints, randomPoints, seededRandom } from '../helpers/pointSets.js';
 
 /** A linear field: barycentric interpolation must reproduce it exactly. */

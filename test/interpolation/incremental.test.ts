@@ -1,11 +1,12 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { TetrahedralMesh } from '../../src/interpolation/TetrahedralMesh.js';
+import { IncrementalTetrahedralMesh } from '../../src/interpolation/IncrementalTetrahedralMesh.js';
 import { DynamicTetrahedralization } from '../../src/tetrahedra/DynamicTetrahedralization.js';
 import { gridPoints, randomPoints, seededRandom } from '../helpers/pointSets.js';
 
 /*
- * Incremental TetrahedralMesh (fromDynamic + moveProbe / addProbe / removeProbe). Truth: a
+ * IncrementalTetrahedralMesh (moveProbe / addProbe / removeProbe). Truth: a
  * TetrahedralMesh built from scratch on the active probes (ids mapped back), compared by
  * interpolate() at 1,000 random points inside and outside the hull (outer cells), linear fields
  * reproduced exactly inside, and each inverse matrix checked against its tetrahedron's vertices
@@ -138,7 +139,7 @@ type Edit = 'move' | 'jump' | 'add' | 'remove';
 function runSequence( positions: Float64Array, seed: number, steps: number, every: number, minimum: number ): { edits: Record<Edit, number>, worst: Comparison } {
 
 	const dynamic = new DynamicTetrahedralization( positions );
-	const mesh = TetrahedralMesh.fromDynamic( dynamic );
+	const mesh = new IncrementalTetrahedralMesh( dynamic );
 	const random = seededRandom( seed );
 	const edits: Record<Edit, number> = { move: 0, jump: 0, add: 0, remove: 0 };
 	const worst: Comparison = { worst: 0, outside: 0, inside: 0, linear: 0 };
@@ -228,7 +229,7 @@ describe( 'incremental TetrahedralMesh', () => {
 		const p = randomPoints( 50, 3, 10 );
 		for ( let i = 2; i < p.length; i += 3 ) p[ i ] *= 0.05;
 		const dynamic = new DynamicTetrahedralization( p );
-		const mesh = TetrahedralMesh.fromDynamic( dynamic );
+		const mesh = new IncrementalTetrahedralMesh( dynamic );
 		const random = seededRandom( 4 );
 		for ( let n = 0; n < 20; n ++ ) {
 
@@ -246,7 +247,7 @@ describe( 'incremental TetrahedralMesh', () => {
 	it( 'a move changes only the inverse matrices of changed cells; the others stay bit for bit', () => {
 
 		const dynamic = new DynamicTetrahedralization( randomPoints( 200, 21, 10 ) );
-		const mesh = TetrahedralMesh.fromDynamic( dynamic );
+		const mesh = new IncrementalTetrahedralMesh( dynamic );
 		// Deep inside: the hull does not change, so the outer cells are kept.
 		let index = - 1;
 		for ( let i = 0; i < 200 && index < 0; i ++ ) {
@@ -279,7 +280,7 @@ describe( 'incremental TetrahedralMesh', () => {
 
 	it( 'many adds grow the stores (capacity doubling) and stay equal to from scratch', () => {
 
-		const mesh = TetrahedralMesh.fromDynamic( new DynamicTetrahedralization( randomPoints( 8, 1, 1 ) ) );
+		const mesh = new IncrementalTetrahedralMesh( new DynamicTetrahedralization( randomPoints( 8, 1, 1 ) ) );
 		const random = seededRandom( 2 );
 		for ( let n = 0; n < 300; n ++ ) mesh.addProbe( random(), random(), random() );
 		expect( mesh.probeCount ).toBe( 308 );
@@ -291,16 +292,14 @@ describe( 'incremental TetrahedralMesh', () => {
 
 	} );
 
-	it( 'rejects edits on a mesh that is not incremental, and bad edits leave the mesh unchanged', () => {
+	it( 'edits exist only on incremental meshes, and bad edits leave the mesh unchanged', () => {
 
 		const positions = randomPoints( 30, 8, 1 );
 		const plain = new TetrahedralMesh( positions );
-		expect( () => plain.moveProbe( 0, 0.5, 0.5, 0.5 ) ).toThrow( /TetrahedralMesh\.moveProbe: this mesh is not incremental/ );
-		expect( () => plain.addProbe( 0.5, 0.5, 0.5 ) ).toThrow( /not incremental/ );
-		expect( () => plain.removeProbe( 0 ) ).toThrow( /not incremental/ );
-		expect( () => TetrahedralMesh.fromDynamic( {} as DynamicTetrahedralization ) ).toThrow( /fromDynamic: dynamic must be a DynamicTetrahedralization/ );
+		for ( const name of [ 'moveProbe', 'addProbe', 'removeProbe' ] ) expect( name in plain, name ).toBe( false );
+		expect( () => new IncrementalTetrahedralMesh( {} as DynamicTetrahedralization ) ).toThrow( /IncrementalTetrahedralMesh: dynamic must be a DynamicTetrahedralization/ );
 
-		const mesh = TetrahedralMesh.fromDynamic( new DynamicTetrahedralization( positions ) );
+		const mesh = new IncrementalTetrahedralMesh( new DynamicTetrahedralization( positions ) );
 		mesh.removeProbe( 3 );
 		const tetrahedra = mesh.tetrahedra.slice();
 		expect( () => mesh.removeProbe( 3 ) ).toThrow( RangeError );
