@@ -1,4 +1,5 @@
 import { orient, inSphere, inSphereTieBreak, inCirclePerturbed } from './predicates.js';
+import { growInt32 } from './growArrays.js';
 
 /** The vertex at infinity of ghost tetrahedra. */
 export const INF = - 1;
@@ -21,7 +22,7 @@ const _startVertices = new Int32Array( 4 );
 
 /**
  * Incremental Delaunay state in flat typed arrays, the insertion core shared by `tetrahedralize`
- * and `DynamicTetrahedralization` (internal: not exported from the package).
+ * and `DynamicTetrahedralization` (internal: not exported from the package; docs/incremental-delaunay.md).
  *
  * Tetrahedron t has vertices `vertices[4t..4t+3]` (INF for the vertex at infinity) and
  * `adjacency[4t+i] = 4u + j`: the face opposite vertex i of t is the face opposite vertex j of u.
@@ -480,12 +481,8 @@ export class DelaunayBuilder {
 	}
 
 	/**
-	 * Drops the storage of a builder that is done (after `finish`) and keeps the empty instance.
-	 * The optimized code of the builder's methods depends on its instances' hidden class, which V8
-	 * reaches only through weak transitions: once the last builder is collected, a full GC discards
-	 * that code ("weak objects" deoptimization) and the next triangulation starts unoptimized
-	 * (about a third slower at 10k points). A used instance has the final hidden class; keeping an
-	 * emptied one (a few hundred bytes) keeps the class, and so the code, alive.
+	 * Drops the storage of a builder that is done (its cells copied out) and keeps the empty instance
+	 * alive, so that V8 keeps the builder's optimized code (why: docs/incremental-delaunay.md).
 	 */
 	retire(): void {
 
@@ -498,48 +495,6 @@ export class DelaunayBuilder {
 		shapeKeeper = this;
 
 	}
-
-	/** Compacts the finite cells into the output arrays. */
-	finish(): { tetrahedra: Uint32Array; neighbors: Int32Array } {
-
-		const v = this.vertices, adj = this.adjacency;
-		const index = new Int32Array( this.used ).fill( - 1 );
-		let count = 0;
-		for ( let t = 0; t < this.used; t ++ ) {
-
-			const k = 4 * t;
-			// FREE is also negative, so one test per vertex rules out released slots and ghosts.
-			if ( v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ) index[ t ] = count ++;
-
-		}
-
-		const tetrahedra = new Uint32Array( 4 * count );
-		const neighbors = new Int32Array( 4 * count );
-		for ( let t = 0; t < this.used; t ++ ) {
-
-			const o = index[ t ];
-			if ( o < 0 ) continue;
-			for ( let i = 0; i < 4; i ++ ) {
-
-				tetrahedra[ 4 * o + i ] = v[ 4 * t + i ];
-				neighbors[ 4 * o + i ] = index[ adj[ 4 * t + i ] >> 2 ];
-
-			}
-
-		}
-
-		return { tetrahedra, neighbors };
-
-	}
-
-}
-
-/** A copy of `array` resized to `length` (truncated or zero-padded). */
-export function growInt32( array: Int32Array, length: number ): Int32Array<ArrayBuffer> {
-
-	const grown = new Int32Array( length );
-	grown.set( array.subarray( 0, Math.min( array.length, length ) ) );
-	return grown;
 
 }
 

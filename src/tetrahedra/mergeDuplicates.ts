@@ -1,3 +1,7 @@
+import { boundsOf } from '../geometry/boundsOf.js';
+
+const _bounds = new Float64Array( 6 );
+
 /**
  * Finds points that coincide within `tolerance × diagonal` of the set's bounding box, with a
  * hashed uniform grid whose cell is the merge distance (so only the 27 surrounding cells can hold
@@ -10,16 +14,8 @@
 export function mergeDuplicates( p: Float64Array, tolerance: number ): { unique: Uint32Array; duplicates: Uint32Array; diagonal: number } {
 
 	const n = p.length / 3;
-	let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
-	for ( let i = 0; i < n; i ++ ) {
-
-		const x = p[ 3 * i ], y = p[ 3 * i + 1 ], z = p[ 3 * i + 2 ];
-		if ( x < minX ) minX = x; if ( x > maxX ) maxX = x;
-		if ( y < minY ) minY = y; if ( y > maxY ) maxY = y;
-		if ( z < minZ ) minZ = z; if ( z > maxZ ) maxZ = z;
-
-	}
-
+	const bounds = boundsOf( p, n, _bounds );
+	const minX = bounds[ 0 ], minY = bounds[ 1 ], minZ = bounds[ 2 ], maxX = bounds[ 3 ], maxY = bounds[ 4 ], maxZ = bounds[ 5 ];
 	const diagonal = Math.hypot( maxX - minX, maxY - minY, maxZ - minZ );
 	const radius = tolerance * diagonal;
 	const radius2 = radius * radius;

@@ -129,7 +129,10 @@ function inSphereNearZero( p: Float64Array, a3: number, b3: number, c3: number, 
 	// Regular grids hit this case most of the time, and it spares the library's expansion arithmetic.
 	if ( twoValues( ax, bx, cx, dx, ex ) && twoValues( ay, by, cy, dy, ey ) && twoValues( az, bz, cz, dz, ez ) ) return 0;
 
-	const sign = inSphereDoubleDouble( ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, ax - ex, ay - ey, az - ez, bx - ex, by - ey, bz - ez, cx - ex, cy - ey, cz - ez, dx - ex, dy - ey, dz - ez, permanent );
+	const sign = inSphereDoubleDouble(
+		ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez,
+		ax - ex, ay - ey, az - ez, bx - ex, by - ey, bz - ez, cx - ex, cy - ey, cz - ez, dx - ex, dy - ey, dz - ez, permanent,
+	);
 	if ( sign !== 0 ) return sign;
 
 	const s = insphere( ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez );

@@ -140,7 +140,9 @@ export function insertionOrder( points: Float64Array, indices: Uint32Array, seed
 
 }
 
-function sortRound( order: Uint32Array, keys: Float64Array, start: number, stop: number, result: Uint32Array, packed: boolean, indexRange: number ): void {
+function sortRound(
+	order: Uint32Array, keys: Float64Array, start: number, stop: number, result: Uint32Array, packed: boolean, indexRange: number,
+): void {
 
 	if ( packed ) {
 

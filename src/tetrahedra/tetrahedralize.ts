@@ -75,7 +75,7 @@ export class DegenerateInputError extends Error {
 export function tetrahedralize( points: ArrayLike<number>, options: TetrahedralizeOptions = {} ): Tetrahedralization {
 
 	const { builder, duplicates } = buildDelaunay( 'tetrahedralize', points, options );
-	const result = { ...builder.finish(), duplicates };
+	const result = { ...finiteCells( builder ), duplicates };
 	builder.retire();
 	return result;
 
@@ -87,7 +87,9 @@ export function tetrahedralize( points: ArrayLike<number>, options: Tetrahedrali
  * @param caller Function name for error messages.
  * @internal
  */
-export function buildDelaunay( caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions ): { builder: DelaunayBuilder; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number } {
+export function buildDelaunay(
+	caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions,
+): { builder: DelaunayBuilder; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number } {
 
 	const count = assertPoints( caller, 'points', points );
 	if ( count < 4 ) {
@@ -118,7 +120,10 @@ export function buildDelaunay( caller: string, points: ArrayLike<number>, option
  * @throws {DegenerateInputError} when the points are collinear or coplanar (before touching `builder`).
  * @internal
  */
-export function insertAll( caller: string, builder: DelaunayBuilder, p: Float64Array, indices: Uint32Array, diagonal: number, planarTolerance: number, seed: number ): void {
+export function insertAll(
+	caller: string, builder: DelaunayBuilder, p: Float64Array, indices: Uint32Array,
+	diagonal: number, planarTolerance: number, seed: number,
+): void {
 
 	const initial = findInitialTetrahedron( caller, p, indices, diagonal, planarTolerance );
 	builder.start( initial );
@@ -141,7 +146,9 @@ export function insertAll( caller: string, builder: DelaunayBuilder, p: Float64A
  * farthest from it, from their line, from their plane. Tolerances make near-degenerate sets fail
  * loudly here instead of producing a mesh of slivers.
  */
-export function findInitialTetrahedron( caller: string, p: Float64Array, unique: Uint32Array, diagonal: number, planarTolerance: number ): [ number, number, number, number ] {
+export function findInitialTetrahedron(
+	caller: string, p: Float64Array, unique: Uint32Array, diagonal: number, planarTolerance: number,
+): [ number, number, number, number ] {
 
 	let i0 = unique[ 0 ];
 	for ( let i = 1; i < unique.length; i ++ ) if ( p[ 3 * unique[ i ] ] < p[ 3 * i0 ] ) i0 = unique[ i ];
@@ -199,5 +206,38 @@ export function findInitialTetrahedron( caller: string, p: Float64Array, unique:
 	}
 
 	return orient( p, i0, i1, i2, i3 ) > 0 ? [ i0, i1, i2, i3 ] : [ i0, i2, i1, i3 ];
+
+}
+
+/** Compacts the finite cells of `builder` into the output arrays. */
+function finiteCells( builder: DelaunayBuilder ): { tetrahedra: Uint32Array; neighbors: Int32Array } {
+
+	const v = builder.vertices, adj = builder.adjacency, used = builder.used;
+	const index = new Int32Array( used ).fill( - 1 );
+	let count = 0;
+	for ( let t = 0; t < used; t ++ ) {
+
+		const k = 4 * t;
+		// FREE is also negative, so one test per vertex rules out released slots and ghosts.
+		if ( v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ) index[ t ] = count ++;
+
+	}
+
+	const tetrahedra = new Uint32Array( 4 * count );
+	const neighbors = new Int32Array( 4 * count );
+	for ( let t = 0; t < used; t ++ ) {
+
+		const o = index[ t ];
+		if ( o < 0 ) continue;
+		for ( let i = 0; i < 4; i ++ ) {
+
+			tetrahedra[ 4 * o + i ] = v[ 4 * t + i ];
+			neighbors[ 4 * o + i ] = index[ adj[ 4 * t + i ] >> 2 ];
+
+		}
+
+	}
+
+	return { tetrahedra, neighbors };
 
 }
