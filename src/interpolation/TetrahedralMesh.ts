@@ -1,8 +1,9 @@
 import { assertArrayLike, assertInteger, assertNumber, assertOutput, assertPoints } from '../validate.js';
 import { tetrahedralize, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
+import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
 import { closestPointOnTriangle } from '../geometry/closestPointOnTriangle.js';
 import { OuterCells } from './OuterCells.js';
-import { checkOrientations, computeInverseMatrices } from './inverseMatrices.js';
+import { computeInverseMatrices } from './inverseMatrices.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 /**
@@ -31,6 +32,12 @@ export interface FromTetrahedralizationOptions {
 
 	/** Pairs (merged probe, probe it was merged into), as `tetrahedralize` reported them. Default none. */
 	duplicates?: ArrayLike<number>;
+
+	/**
+	 * Skip {@link validateTetrahedralization}: only for data it (e.g. `decodeBakedVolume`) already
+	 * accepted. The hull's closed-surface and convexity checks still run. Default false.
+	 */
+	trusted?: boolean;
 
 }
 
@@ -184,64 +191,31 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 	/**
 	 * A mesh from a stored tetrahedralization (e.g. baked data), without tetrahedralizing again.
-	 * Checks in O(n), naming the first problem: lengths, indices out of range, non-finite positions,
-	 * neighbours that are not symmetric or do not share the face, tetrahedra that are not
-	 * positively oriented, hull faces (neighbour −1) that do not form one closed convex surface. It
-	 * does not check the Delaunay property or that the tetrahedra do not overlap. `tetrahedra` and `neighbors` are kept
-	 * by reference when they are already a `Uint32Array` and an `Int32Array`.
+	 * Checks in O(n), naming the first problem: lengths, non-finite positions, then
+	 * {@link validateTetrahedralization} (indices, orientation, neighbour links), then that the hull
+	 * faces (neighbour −1) form one closed convex surface. It does not check the Delaunay property.
+	 * `tetrahedra` and `neighbors` are kept by reference when they are already a `Uint32Array` and
+	 * an `Int32Array`.
 	 * @param positions Flat x, y, z per probe.
 	 * @param tetrahedra Four probe indices per tetrahedron, positively oriented.
 	 * @param neighbors `neighbors[4t + i]`: the tetrahedron across the face opposite vertex i of t, or −1.
-	 * @throws Error naming the argument and the problem.
+	 * @throws RangeError for lengths and indices, Error (a `TetrahedralizationError` for the links
+	 * and orientation) for the rest, naming the argument and the problem.
 	 */
-	static fromTetrahedralization( positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, options: FromTetrahedralizationOptions = {} ): TetrahedralMesh {
+	static fromTetrahedralization(
+		positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>,
+		options: FromTetrahedralizationOptions = {},
+	): TetrahedralMesh {
 
-		const probeCount = assertPoints( FROM, 'positions', positions, 4 );
+		assertPoints( FROM, 'positions', positions, 4 );
 		assertArrayLike( FROM, 'tetrahedra', tetrahedra );
 		assertArrayLike( FROM, 'neighbors', neighbors );
 		if ( tetrahedra.length === 0 || tetrahedra.length % 4 !== 0 ) throw new RangeError( `${FROM}: tetrahedra must hold 4 indices per tetrahedron (a positive multiple of 4), got length ${tetrahedra.length}.` );
 		if ( neighbors.length !== tetrahedra.length ) throw new RangeError( `${FROM}: neighbors must have one entry per tetrahedron face (length ${tetrahedra.length}), got length ${neighbors.length}.` );
-		const count = tetrahedra.length / 4;
-		const tets = tetrahedra instanceof Uint32Array ? tetrahedra : new Uint32Array( tetrahedra.length );
-		const adjacent = neighbors instanceof Int32Array ? neighbors : new Int32Array( neighbors.length );
-		for ( let i = 0; i < tetrahedra.length; i ++ ) {
-
-			const v = tetrahedra[ i ];
-			if ( ! Number.isInteger( v ) || v < 0 || v >= probeCount ) throw new RangeError( `${FROM}: tetrahedra[${i}] = ${v} is not a probe index (0..${probeCount - 1}).` );
-			tets[ i ] = v;
-			const u = neighbors[ i ];
-			if ( ! Number.isInteger( u ) || u < - 1 || u >= count ) throw new RangeError( `${FROM}: neighbors[${i}] = ${u} is neither −1 nor a tetrahedron index (0..${count - 1}).` );
-			adjacent[ i ] = u;
-
-		}
-
-		for ( let t = 0; t < count; t ++ ) {
-
-			const k = 4 * t;
-			for ( let i = 0; i < 4; i ++ ) {
-
-				const u = adjacent[ k + i ];
-				if ( u === - 1 ) continue;
-				// The slot j of u whose vertex is not on t's face; the other three must be that face.
-				let j = - 1, shared = 0;
-				for ( let m = 0; m < 4; m ++ ) {
-
-					const v = tets[ 4 * u + m ];
-					let onFace = false;
-					for ( let n = 0; n < 4; n ++ ) if ( n !== i && tets[ k + n ] === v ) onFace = true;
-					if ( onFace ) shared ++; else j = m;
-
-				}
-
-				if ( shared !== 3 || j < 0 || tets[ 4 * u + j ] === tets[ k + i ] ) throw new Error( `${FROM}: neighbors[${k + i}] = ${u}, but tetrahedron ${u} does not share the face opposite vertex ${i} of tetrahedron ${t}.` );
-				if ( adjacent[ 4 * u + j ] !== t ) throw new Error( `${FROM}: neighbours are not symmetric: neighbors[${k + i}] = ${u} but neighbors[${4 * u + j}] = ${adjacent[ 4 * u + j ]}, not ${t}.` );
-
-			}
-
-		}
-
 		const p = Float64Array.from( positions );
-		checkOrientations( FROM, p, tets );
+		const { tetrahedra: tets, neighbors: adjacent } = options.trusted === true
+			? { tetrahedra: toUint32( tetrahedra ), neighbors: toInt32( neighbors ) }
+			: validated( p, tetrahedra, neighbors );
 		const duplicates = options.duplicates ? Uint32Array.from( options.duplicates ) : new Uint32Array( 0 );
 		return new TetrahedralMesh( p, { outside: options.outside }, meshParts( FROM, p, tets, adjacent, duplicates ) );
 
@@ -320,7 +294,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		for ( let t = 0, n = this.tetrahedra.length / 4; t < n; t ++ ) {
 
 			this.barycentric( t, x, y, z, _weights );
-			if ( _weights[ 0 ] >= - INSIDE_EPSILON && _weights[ 1 ] >= - INSIDE_EPSILON && _weights[ 2 ] >= - INSIDE_EPSILON && _weights[ 3 ] >= - INSIDE_EPSILON ) return t;
+			if ( _weights[ 0 ] >= - INSIDE_EPSILON && _weights[ 1 ] >= - INSIDE_EPSILON
+				&& _weights[ 2 ] >= - INSIDE_EPSILON && _weights[ 3 ] >= - INSIDE_EPSILON ) return t;
 
 		}
 
@@ -355,7 +330,9 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * `cellCount + f` for outer cell f; with `'nearestFace'`, the tetrahedron owning the nearest hull face.
 	 * @throws RangeError when a coordinate is NaN or infinite.
 	 */
-	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
+	interpolate(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1,
+	): number {
 
 		// x − x is 0 for every finite number and NaN for NaN and ±Infinity: one test for all three.
 		if ( ! ( x - x === 0 && y - y === 0 && z - z === 0 ) ) {
@@ -386,7 +363,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 				const w0 = _weights[ 0 ] > 0 ? _weights[ 0 ] : 0, w1 = _weights[ 1 ] > 0 ? _weights[ 1 ] : 0;
 				const w2 = _weights[ 2 ] > 0 ? _weights[ 2 ] : 0, w3 = _weights[ 3 ] > 0 ? _weights[ 3 ] : 0;
 				const s = 1 / ( w0 + w1 + w2 + w3 ), k = 4 * t;
-				indices[ 0 ] = tetrahedra[ k ]; indices[ 1 ] = tetrahedra[ k + 1 ]; indices[ 2 ] = tetrahedra[ k + 2 ]; indices[ 3 ] = tetrahedra[ k + 3 ];
+				indices[ 0 ] = tetrahedra[ k ]; indices[ 1 ] = tetrahedra[ k + 1 ];
+				indices[ 2 ] = tetrahedra[ k + 2 ]; indices[ 3 ] = tetrahedra[ k + 3 ];
 				weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = w3 * s;
 				return t;
 
@@ -413,7 +391,9 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * Same as {@link TetrahedralMesh.interpolate} with argument checks; for tools and tests rather
 	 * than per-frame loops.
 	 */
-	interpolateChecked( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
+	interpolateChecked(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1,
+	): number {
 
 		assertNumber( 'TetrahedralMesh.interpolate', 'x', x );
 		assertNumber( 'TetrahedralMesh.interpolate', 'y', y );
@@ -429,7 +409,10 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * The weights of the nearest point on the hull (a scan of every hull face).
 	 * @param outerHint Return `cellCount + face` (the outer-cell fallback) rather than the face's tetrahedron.
 	 */
-	private interpolateNearestFace( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], outerHint: boolean ): number {
+	private interpolateNearestFace(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[],
+		outerHint: boolean,
+	): number {
 
 		const face = this.nearestHullFace( x, y, z );
 		this.writeFace( face, indices );
@@ -473,7 +456,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		for ( let f = 0, n = faces.length / 3; f < n; f ++ ) {
 
 			const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
-			const d = closestPointOnTriangle( x, y, z, p[ a ], p[ a + 1 ], p[ a + 2 ], p[ b ], p[ b + 1 ], p[ b + 2 ], p[ c ], p[ c + 1 ], p[ c + 2 ], _closest );
+			const d = closestPointOnTriangle(
+				x, y, z, p[ a ], p[ a + 1 ], p[ a + 2 ], p[ b ], p[ b + 1 ], p[ b + 2 ], p[ c ], p[ c + 1 ], p[ c + 2 ], _closest );
 			// The first face always counts, so a distance that overflowed to Infinity still answers.
 			if ( d < bestDistance || best < 0 ) {
 
@@ -496,7 +480,9 @@ export class TetrahedralMesh implements ProbeInterpolator {
  * Inverse matrices, hull faces (sorted by tetrahedron) and outer cells of a tetrahedralization.
  * @param where Function name for the outer cells' messages.
  */
-function meshParts( where: string, p: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array, duplicates: Uint32Array ): TetrahedralMeshParts {
+function meshParts(
+	where: string, p: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array, duplicates: Uint32Array,
+): TetrahedralMeshParts {
 
 	const inverseMatrices = computeInverseMatrices( p, tetrahedra );
 
@@ -517,10 +503,10 @@ function meshParts( where: string, p: Float64Array, tetrahedra: Uint32Array, nei
 			// positive tetrahedron that makes it counter-clockwise seen from outside.
 			const k = 4 * t, f = 3 * o;
 			const v0 = tetrahedra[ k ], v1 = tetrahedra[ k + 1 ], v2 = tetrahedra[ k + 2 ], v3 = tetrahedra[ k + 3 ];
-			if ( i === 0 ) { faces[ f ] = v1; faces[ f + 1 ] = v2; faces[ f + 2 ] = v3; }
-			else if ( i === 1 ) { faces[ f ] = v0; faces[ f + 1 ] = v3; faces[ f + 2 ] = v2; }
-			else if ( i === 2 ) { faces[ f ] = v0; faces[ f + 1 ] = v1; faces[ f + 2 ] = v3; }
-			else { faces[ f ] = v0; faces[ f + 1 ] = v2; faces[ f + 2 ] = v1; }
+			// i = 0: (v1, v2, v3); 1: (v0, v3, v2); 2: (v0, v1, v3); 3: (v0, v2, v1).
+			faces[ f ] = i === 0 ? v1 : v0;
+			faces[ f + 1 ] = i === 0 ? v2 : i === 1 ? v3 : i === 2 ? v1 : v2;
+			faces[ f + 2 ] = i === 0 ? v3 : i === 1 ? v2 : i === 2 ? v3 : v1;
 			owners[ o ] = t; slots[ o ] = i;
 			o ++;
 
@@ -532,5 +518,33 @@ function meshParts( where: string, p: Float64Array, tetrahedra: Uint32Array, nei
 		where, positions: p, tetrahedra, neighbors, duplicates, inverseMatrices,
 		hullFaces: faces, hullFaceTetrahedra: owners, hullFaceSlots: slots, outerCells: new OuterCells( p, faces, where ),
 	};
+
+}
+
+/** {@link validateTetrahedralization} for fromTetrahedralization: indices out of range stay RangeErrors, like its other argument checks. */
+function validated( p: Float64Array, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number> ): ValidTetrahedralization {
+
+	try {
+
+		return validateTetrahedralization( FROM, p, tetrahedra, neighbors );
+
+	} catch ( error ) {
+
+		if ( error instanceof TetrahedralizationError && error.code === 'range' ) throw new RangeError( error.message );
+		throw error;
+
+	}
+
+}
+
+function toUint32( values: ArrayLike<number> ): Uint32Array {
+
+	return values instanceof Uint32Array ? values : Uint32Array.from( values );
+
+}
+
+function toInt32( values: ArrayLike<number> ): Int32Array {
+
+	return values instanceof Int32Array ? values : Int32Array.from( values );
 
 }

@@ -3,8 +3,6 @@
  * inverse of [p0 − p3, p1 − p3, p2 − p3], so that (w0, w1, w2) = inverse · (p − p3).
  */
 
-import { orient } from '../tetrahedra/predicates.js';
-
 /** Per tetrahedron, the inverse of [p0 − p3, p1 − p3, p2 − p3] (9 floats each). */
 export function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array ): Float64Array {
 
@@ -15,31 +13,11 @@ export function computeInverseMatrices( p: Float64Array, tetrahedra: Uint32Array
 
 }
 
-/** Throws when a stored tetrahedron is not positively oriented. */
-export function checkOrientations( where: string, p: Float64Array, tetrahedra: Uint32Array ): void {
-
-	for ( let t = 0, count = tetrahedra.length / 4; t < count; t ++ ) {
-
-		const i0 = 3 * tetrahedra[ 4 * t ], i1 = 3 * tetrahedra[ 4 * t + 1 ], i2 = 3 * tetrahedra[ 4 * t + 2 ], i3 = 3 * tetrahedra[ 4 * t + 3 ];
-		const a = p[ i0 ] - p[ i3 ], d = p[ i0 + 1 ] - p[ i3 + 1 ], g = p[ i0 + 2 ] - p[ i3 + 2 ];
-		const b = p[ i1 ] - p[ i3 ], e = p[ i1 + 1 ] - p[ i3 + 1 ], h = p[ i1 + 2 ] - p[ i3 + 2 ];
-		const c = p[ i2 ] - p[ i3 ], f = p[ i2 + 1 ] - p[ i3 + 1 ], i = p[ i2 + 2 ] - p[ i3 + 2 ];
-		const det = a * ( e * i - f * h ) - b * ( d * i - f * g ) + c * ( d * h - e * g );
-		// det M = −det[p1 − p0, p2 − p0, p3 − p0]; a rounded det of the wrong sign is settled exactly.
-		if ( ! ( det < 0 ) && orient( p, i0 / 3, i1 / 3, i2 / 3, i3 / 3 ) <= 0 ) {
-
-			throw new Error( `${where}: tetrahedron ${t} (probes ${i0 / 3}, ${i1 / 3}, ${i2 / 3}, ${i3 / 3}) is not positively oriented (det[p1 − p0, p2 − p0, p3 − p0] ≤ 0).` );
-
-		}
-
-	}
-
-}
-
 /** Writes the inverse of [p0 − p3, p1 − p3, p2 − p3] of tetrahedron t to `out[9t..9t+8]`. */
 export function writeInverse( p: Float64Array, tetrahedra: Uint32Array, t: number, out: Float64Array ): void {
 
-	const i0 = 3 * tetrahedra[ 4 * t ], i1 = 3 * tetrahedra[ 4 * t + 1 ], i2 = 3 * tetrahedra[ 4 * t + 2 ], i3 = 3 * tetrahedra[ 4 * t + 3 ];
+	const i0 = 3 * tetrahedra[ 4 * t ], i1 = 3 * tetrahedra[ 4 * t + 1 ];
+	const i2 = 3 * tetrahedra[ 4 * t + 2 ], i3 = 3 * tetrahedra[ 4 * t + 3 ];
 	// Columns of M: p0 − p3, p1 − p3, p2 − p3.
 	const a = p[ i0 ] - p[ i3 ], d = p[ i0 + 1 ] - p[ i3 + 1 ], g = p[ i0 + 2 ] - p[ i3 + 2 ];
 	const b = p[ i1 ] - p[ i3 ], e = p[ i1 + 1 ] - p[ i3 + 1 ], h = p[ i1 + 2 ] - p[ i3 + 2 ];

@@ -44,7 +44,8 @@ export function crc32( bytes: Uint8Array, start = 0, end = bytes.length ): numbe
 	for ( const stop = end - 7; i < stop; i += 8 ) {
 
 		const lo = c ^ ( bytes[ i ] | ( bytes[ i + 1 ] << 8 ) | ( bytes[ i + 2 ] << 16 ) | ( bytes[ i + 3 ] << 24 ) );
-		c = t[ 1792 + ( lo & 0xFF ) ] ^ t[ 1536 + ( ( lo >>> 8 ) & 0xFF ) ] ^ t[ 1280 + ( ( lo >>> 16 ) & 0xFF ) ] ^ t[ 1024 + ( lo >>> 24 ) ]
+		c = t[ 1792 + ( lo & 0xFF ) ] ^ t[ 1536 + ( ( lo >>> 8 ) & 0xFF ) ]
+			^ t[ 1280 + ( ( lo >>> 16 ) & 0xFF ) ] ^ t[ 1024 + ( lo >>> 24 ) ]
 			^ t[ 768 + bytes[ i + 4 ] ] ^ t[ 512 + bytes[ i + 5 ] ] ^ t[ 256 + bytes[ i + 6 ] ] ^ t[ bytes[ i + 7 ] ];
 
 	}

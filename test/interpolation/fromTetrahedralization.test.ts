@@ -116,6 +116,39 @@ describe( 'TetrahedralMesh.fromTetrahedralization', () => {
 
 	} );
 
+	it( 'trusted: skips validateTetrahedralization (data a decoder already checked), keeps the hull checks', () => {
+
+		const data = stored( randomPoints( 200, 11 ) );
+		const checked = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors );
+		const trusted = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { trusted: true } );
+		expect( Array.from( trusted.inverseMatrices ) ).toEqual( Array.from( checked.inverseMatrices ) );
+		expect( Array.from( trusted.hullFaces ) ).toEqual( Array.from( checked.hullFaces ) );
+		expect( Array.from( trusted.outerCells.normals ) ).toEqual( Array.from( checked.outerCells.normals ) );
+
+		// An inner tetrahedron inverted (two vertices and their links swapped): refused unless trusted.
+		const count = data.tetrahedra.length / 4;
+		let t = 0;
+		while ( t < count && [ 0, 1, 2, 3 ].some( ( i ) => data.neighbors[ 4 * t + i ] < 0 ) ) t ++;
+		expect( t ).toBeLessThan( count );
+		const tetrahedra = data.tetrahedra.slice(), neighbors = data.neighbors.slice();
+		[ tetrahedra[ 4 * t ], tetrahedra[ 4 * t + 1 ] ] = [ tetrahedra[ 4 * t + 1 ], tetrahedra[ 4 * t ] ];
+		[ neighbors[ 4 * t ], neighbors[ 4 * t + 1 ] ] = [ neighbors[ 4 * t + 1 ], neighbors[ 4 * t ] ];
+		expect( () => TetrahedralMesh.fromTetrahedralization( data.positions, tetrahedra, neighbors ) ).toThrow( /is not positively oriented/ );
+		expect( () => TetrahedralMesh.fromTetrahedralization( data.positions, tetrahedra, neighbors, { trusted: true } ) ).not.toThrow();
+
+		// Indices out of range are RangeErrors; the hull's closed-surface check runs even when trusted.
+		const bad = data.tetrahedra.slice();
+		bad[ 5 ] = 200;
+		expect( () => TetrahedralMesh.fromTetrahedralization( data.positions, bad, data.neighbors ) ).toThrow( RangeError );
+		const face = interiorFace( data.tetrahedra, data.neighbors );
+		const open = data.neighbors.slice();
+		open[ 4 * face.t + face.i ] = - 1;
+		open[ 4 * face.u + face.j ] = - 1;
+		expect( () => TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, open, { trusted: true } ) )
+			.toThrow( /hull faces form more than one closed surface/ );
+
+	} );
+
 	it( 'loads a 20,000-probe tetrahedralization (O(n) checks, no re-tetrahedralization)', () => {
 
 		const positions = randomPoints( 20000, 9 );

@@ -2,8 +2,8 @@ import { describe, expect, it } from 'vitest';
 import {
 	encodeBakedVolume, decodeBakedVolume, bakedVolumeToJSON, bakedVolumeFromJSON, validateBakedVolume,
 	type BakedVolumeData, type BakedVolumeInput,
-} from '../../src/io/BakedVolume.js';
-import { BakedVolumeError, type BakedVolumeErrorCode } from '../../src/io/BakedVolumeError.js';
+	BakedVolumeError, type BakedVolumeErrorCode,
+} from '../../src/io/index.js';
 import { fromFloat16Bits } from '../../src/io/float16.js';
 import { readFileSync } from 'node:fs';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';

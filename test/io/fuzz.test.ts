@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { encodeBakedVolume, decodeBakedVolume, type BakedVolumeData } from '../../src/io/BakedVolume.js';
-import { BakedVolumeError } from '../../src/io/BakedVolumeError.js';
+import { BakedVolumeError, encodeBakedVolume, decodeBakedVolume, type BakedVolumeData } from '../../src/io/index.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 import { makeVolume, independentCheck, fixChecksum, fourCC } from './helpers.js';
 

@@ -4,9 +4,8 @@ import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader, type GLTF } from 'three/addons/loaders/GLTFLoader.js';
 import {
 	GLTFLightProbeVolumeExporterPlugin, GLTFLightProbeVolumeLoaderPlugin, GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry,
-} from '../../src/io/GLTFLightProbeVolumeExtension.js';
-import { decodeBakedVolume, type BakedVolumeInput } from '../../src/io/BakedVolume.js';
-import { BakedVolumeError } from '../../src/io/BakedVolumeError.js';
+} from '../../src/gltf/GLTFLightProbeVolumeExtension.js';
+import { BakedVolumeError, decodeBakedVolume, type BakedVolumeInput } from '../../src/io/index.js';
 import { makeVolume, independentCheck } from './helpers.js';
 
 /*

@@ -1,7 +1,7 @@
 import { orient3d } from 'robust-predicates';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
-import type { BakedVolumeData, BakedVolumeInput } from '../../src/io/BakedVolume.js';
+import type { BakedVolumeData, BakedVolumeInput } from '../../src/io/index.js';
 
 /*
  * Test-side helpers written from docs/format.md, not from the codec: a bitwise CRC-32, a section

@@ -1,7 +1,8 @@
 import type { GLTFExporterPlugin, GLTFWriter } from 'three/examples/jsm/exporters/GLTFExporter.js';
 import type { GLTF, GLTFLoaderPlugin, GLTFParser } from 'three/examples/jsm/loaders/GLTFLoader.js';
-import { decodeBakedVolume, encodeBakedVolume, type BakedVolumeData, type BakedVolumeInput, type EncodeBakedVolumeOptions } from './BakedVolume.js';
-import { BakedVolumeError } from './BakedVolumeError.js';
+import {
+	BakedVolumeError, decodeBakedVolume, encodeBakedVolume, type BakedVolumeData, type BakedVolumeInput, type EncodeBakedVolumeOptions,
+} from '../io/index.js';
 
 /**
  * Name of the glTF extension that carries baked light probe volumes (docs/format.md, "glTF"):
@@ -36,7 +37,8 @@ interface WriterInternals {
  * GLTFExporter plugin writing light probe volumes into the file (binary .glb or .gltf with a data URI).
  *
  * ```js
- * exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, [ { name: 'level', data } ], { precision: 'float16' } ) );
+ * const volumes = [ { name: 'level', data } ];
+ * exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, volumes, { precision: 'float16' } ) );
  * const glb = await exporter.parseAsync( scene, { binary: true } );
  * ```
  */
@@ -54,7 +56,10 @@ export class GLTFLightProbeVolumeExporterPlugin implements GLTFExporterPlugin {
 	 * @param volumes The volumes to write (a bare volume is written with the name '').
 	 * @param options Encoding options (SH precision), for every volume.
 	 */
-	constructor( writer: GLTFWriter, volumes: readonly GLTFLightProbeVolumeEntry<BakedVolumeInput>[] | BakedVolumeInput, options: EncodeBakedVolumeOptions = {} ) {
+	constructor(
+		writer: GLTFWriter, volumes: readonly GLTFLightProbeVolumeEntry<BakedVolumeInput>[] | BakedVolumeInput,
+		options: EncodeBakedVolumeOptions = {},
+	) {
 
 		this.writer = writer as unknown as WriterInternals;
 		this.volumes = Array.isArray( volumes ) ? volumes.slice() : [ { name: '', data: volumes as BakedVolumeInput } ];
