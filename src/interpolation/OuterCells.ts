@@ -1,4 +1,5 @@
-import { orient } from '../tetrahedra/predicates.js';
+import { hullAdjacency, hullBounds } from './hullSurface.js';
+import { FAR_LIMIT, outerCellNormals } from './outerCellNormals.js';
 
 // A point whose weights in a cell are all ≥ −OUTER_EPSILON belongs to it (rounding on shared quads).
 const OUTER_EPSILON = 1e-10;
@@ -6,11 +7,6 @@ const OUTER_EPSILON = 1e-10;
 // Points closer to a face's plane than this fraction of the hull's size count as on it (t = 0), so a
 // point the interior walk rounded to "just outside" does not look for a root far away.
 const ON_PLANE_EPSILON = 1e-12;
-
-// Queries farther than this many hull sizes from the hull's centre are pulled in along the same
-// direction: the weights have converged to their limit there (to ~1e-12), and the cubic's
-// coefficients stay far from overflow.
-const FAR_LIMIT = 1e12;
 
 const _solve = new Float64Array( 4 );
 
@@ -23,36 +19,13 @@ const _cubic = new Float64Array( 4 );
 
 /**
  * Extrapolation outside the convex hull of the probes by "outer cells" (what Unity's light probes
- * do): every hull vertex gets an outward normal, and every hull triangle (a, b, c) sweeps the
- * region covered by the moved triangle { a + t·na, b + t·nb, c + t·nc }, t ≥ 0. A point q of that
- * region lies in the plane of exactly one moved triangle near the hull; its barycentric weights in
- * that triangle are the interpolation weights. At t = 0 they are the hull triangle's own weights,
- * which are the tetrahedron's weights on the hull, so the field is continuous from inside to
- * outside; neighbouring cells share the ruled quad swept by their common edge, on which both give
- * the same two weights, so it is continuous across outer cells too. Along a vertex's ray the
- * weights are that vertex's alone, and far away they tend to the barycentric weights of the
- * direction in the triangle of normals (a limit, not a blow-up).
- *
- * Vertex normals are angle-weighted averages of the adjacent hull faces' normals: the weight of a
- * face is its corner angle at the vertex, so the normal does not depend on how a flat part of the
- * hull happens to be triangulated (a grid's side gets its face normal, a box corner the diagonal
- * (1, 1, 1)/√3 whatever the split) nor on the faces' sizes — area weighting would let the large
- * faces of a thin slab swamp its narrow rim, so the rim's rays would run almost parallel to the
- * slab and its outer cells would be slivers.
- *
- * The cells tile the outside (every outside point in exactly one cell, no gaps, no overlaps)
- * when every cell's sweep is one-to-one — its Jacobian N(t) · nᵢ stays positive for t ≥ 0 at its
- * three vertices, a test on three quadratics per cell (see `folds`, which also proves the tiling).
- * On very flat, irregular hulls angle-weighted normals of neighbouring rim vertices can point so
- * differently that rays cross each other's cells (gaps answered by the fallback, or two cells with
- * different weights: jumps in the light). Those normals alone are then smoothed until no cell
- * folds (`untangle`), and where smoothing does not get there, pulled step by step towards the
- * radial direction from the hull's centroid, which never folds (`unfold`, guaranteed to
- * terminate). Grids, slabs and ordinary volumes keep their angle-weighted normals exactly.
- *
- * The walk from cell to cell ({@link OuterCells.locate}) crosses the edge of the most negative
- * weight, so a point costs a few cells, not a scan of the hull; the cells are built in O(hull
- * faces). Pure math: no three.js. Used by `TetrahedralMesh`; exposed for tests and tools.
+ * do): every hull vertex gets an outward normal, and every hull triangle (a, b, c) sweeps the region
+ * covered by the moved triangle { a + t·na, b + t·nb, c + t·nc }, t ≥ 0. A point of that region gets
+ * its barycentric weights in the moved triangle whose plane it lies in — continuous with the
+ * tetrahedra's weights on the hull and across neighbouring cells, converging far away. The cells tile
+ * the outside (normals are repaired where a sweep would fold); {@link OuterCells.locate} walks from
+ * cell to cell, so a point costs a few cells. Built in O(hull faces). Pure math: no three.js. Used by
+ * `TetrahedralMesh`; exposed for tests and tools. Construction, proofs and history: docs/outer-cells.md.
  */
 export class OuterCells {
 
@@ -74,7 +47,7 @@ export class OuterCells {
 
 	/**
 	 * Unit outward normal per probe: the angle-weighted average of its hull faces' normals (smoothed,
-	 * then blended towards radial, where a cell would fold, see the class comment); 0, 0, 0 off the
+	 * then blended towards radial, where a cell would fold: docs/outer-cells.md); 0, 0, 0 off the
 	 * hull.
 	 */
 	readonly normals: Float64Array;
@@ -108,124 +81,14 @@ export class OuterCells {
 
 		// The bounding box of the hull's vertices is the probes' (extremes are hull vertices), and
 		// ignores positions that are in no face (probes removed from an incremental mesh).
-		let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
-		for ( let j = 0; j < faces.length; j ++ ) {
-
-			const i = 3 * faces[ j ], x = p[ i ], y = p[ i + 1 ], z = p[ i + 2 ];
-			if ( x < minX ) minX = x; if ( x > maxX ) maxX = x;
-			if ( y < minY ) minY = y; if ( y > maxY ) maxY = y;
-			if ( z < minZ ) minZ = z; if ( z > maxZ ) maxZ = z;
-
-		}
-
+		const bounds = hullBounds( p, faces );
+		let minX = bounds[ 0 ], minY = bounds[ 1 ], minZ = bounds[ 2 ], maxX = bounds[ 3 ], maxY = bounds[ 4 ], maxZ = bounds[ 5 ];
 		if ( faces.length === 0 ) minX = minY = minZ = maxX = maxY = maxZ = 0;
 		this.scale = Math.hypot( maxX - minX, maxY - minY, maxZ - minZ ) || 1;
 		this.center = Float64Array.of( ( minX + maxX ) / 2, ( minY + maxY ) / 2, ( minZ + maxZ ) / 2 );
 
-		// Angle-weighted vertex normals (see the class comment for why angles).
-		const normals = this.normals = new Float64Array( p.length );
-		const faceNormals = new Float64Array( 3 * faceCount ), angles = new Float64Array( 3 * faceCount );
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			const ia = 3 * faces[ 3 * f ], ib = 3 * faces[ 3 * f + 1 ], ic = 3 * faces[ 3 * f + 2 ];
-			const abx = p[ ib ] - p[ ia ], aby = p[ ib + 1 ] - p[ ia + 1 ], abz = p[ ib + 2 ] - p[ ia + 2 ];
-			const acx = p[ ic ] - p[ ia ], acy = p[ ic + 1 ] - p[ ia + 1 ], acz = p[ ic + 2 ] - p[ ia + 2 ];
-			const bcx = p[ ic ] - p[ ib ], bcy = p[ ic + 1 ] - p[ ib + 1 ], bcz = p[ ic + 2 ] - p[ ib + 2 ];
-			let nx = aby * acz - abz * acy, ny = abz * acx - abx * acz, nz = abx * acy - aby * acx;
-			const length = Math.hypot( nx, ny, nz );
-			if ( length === 0 ) continue;
-			nx /= length; ny /= length; nz /= length;
-			faceNormals[ 3 * f ] = nx; faceNormals[ 3 * f + 1 ] = ny; faceNormals[ 3 * f + 2 ] = nz;
-			// Corner angles by atan2(|u × v|, u · v): accurate for thin triangles, unlike acos.
-			const angleA = Math.atan2( length, abx * acx + aby * acy + abz * acz );
-			const angleB = Math.atan2( length, - ( abx * bcx + aby * bcy + abz * bcz ) );
-			const angleC = Math.max( 0, Math.PI - angleA - angleB );
-			angles[ 3 * f ] = angleA; angles[ 3 * f + 1 ] = angleB; angles[ 3 * f + 2 ] = angleC;
-			normals[ ia ] += angleA * nx; normals[ ia + 1 ] += angleA * ny; normals[ ia + 2 ] += angleA * nz;
-			normals[ ib ] += angleB * nx; normals[ ib + 1 ] += angleB * ny; normals[ ib + 2 ] += angleB * nz;
-			normals[ ic ] += angleC * nx; normals[ ic + 1 ] += angleC * ny; normals[ ic + 2 ] += angleC * nz;
-
-		}
-
-		for ( let i = 0; i < normals.length; i += 3 ) {
-
-			const length = Math.hypot( normals[ i ], normals[ i + 1 ], normals[ i + 2 ] );
-			if ( length > 0 ) { normals[ i ] /= length; normals[ i + 1 ] /= length; normals[ i + 2 ] /= length; }
-
-		}
-
-		if ( untangle( p, faces, faceNormals, angles, normals, this.scale ) ) unfold( p, faces, normals, this.scale );
-
-		// Edge adjacency: the directed edge (u → v) of one face is (v → u) in its neighbour.
-		const probeCount = p.length / 3;
-		const edges = new Map<number, number>();
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const u = faces[ 3 * f + ( k + 1 ) % 3 ], v = faces[ 3 * f + ( k + 2 ) % 3 ];
-				const key = u * probeCount + v;
-				if ( edges.has( key ) ) throw new Error( `${where}: hull edge (${u}, ${v}) belongs to more than one hull face in the same direction; the hull is not a closed surface (bad tetrahedra or neighbours).` );
-				edges.set( key, 3 * f + k );
-
-			}
-
-		}
-
-		const adjacency = this.adjacency = new Int32Array( 3 * faceCount );
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const u = faces[ 3 * f + ( k + 1 ) % 3 ], v = faces[ 3 * f + ( k + 2 ) % 3 ];
-				const other = edges.get( v * probeCount + u );
-				if ( other === undefined ) throw new Error( `${where}: hull edge (${u}, ${v}) has a hull face on one side only; the hull is not a closed surface (bad tetrahedra or neighbours).` );
-				adjacency[ 3 * f + k ] = ( other / 3 ) | 0;
-
-			}
-
-		}
-
-		// Convex at every edge (exact): the neighbour's far vertex is not above this face's plane.
-		// With one connected closed surface (below) that makes the hull convex, which the walks
-		// (leaving through a hull face means outside) rely on.
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			const a = faces[ 3 * f ], b = faces[ 3 * f + 1 ], c = faces[ 3 * f + 2 ];
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const g = adjacency[ 3 * f + k ], key = 3 * g;
-				let far = faces[ key ];
-				if ( far === faces[ 3 * f + ( k + 1 ) % 3 ] || far === faces[ 3 * f + ( k + 2 ) % 3 ] ) far = faces[ key + 1 ];
-				if ( far === faces[ 3 * f + ( k + 1 ) % 3 ] || far === faces[ 3 * f + ( k + 2 ) % 3 ] ) far = faces[ key + 2 ];
-				if ( orient( p, a, b, c, far ) > 0 ) throw new Error( `${where}: the hull is not convex at edge (${faces[ 3 * f + ( k + 1 ) % 3 ]}, ${faces[ 3 * f + ( k + 2 ) % 3 ]}): the tetrahedra do not fill the probes' convex hull.` );
-
-			}
-
-		}
-
-		// One connected surface: a face pair wrongly marked as hull inside the volume closes up on
-		// itself and would pass the edge test above. Depth-first over the adjacency, O(faces).
-		if ( faceCount > 0 ) {
-
-			const seen = new Uint8Array( faceCount ), stack = new Int32Array( faceCount );
-			let top = 0, reached = 1;
-			stack[ top ++ ] = 0; seen[ 0 ] = 1;
-			while ( top > 0 ) {
-
-				const f = stack[ -- top ];
-				for ( let k = 0; k < 3; k ++ ) {
-
-					const g = adjacency[ 3 * f + k ];
-					if ( seen[ g ] === 0 ) { seen[ g ] = 1; reached ++; stack[ top ++ ] = g; }
-
-				}
-
-			}
-
-			if ( reached !== faceCount ) throw new Error( `${where}: the hull faces form more than one closed surface (${reached} of ${faceCount} faces reachable from the first); some faces marked as hull (neighbour −1) are inside the volume.` );
-
-		}
+		const normals = this.normals = outerCellNormals( p, faces, this.scale );
+		this.adjacency = hullAdjacency( p, faces, where );
 
 		// Cubic coefficients. With E1 = b − a, E2 = c − a, F1 = nb − na, F2 = nc − na, G = −na and
 		// D = q − a, det[E1 + tF1, E2 + tF2, D + tG] expands to
@@ -242,8 +105,10 @@ export class OuterCells {
 			const ia = 3 * faces[ 3 * f ], ib = 3 * faces[ 3 * f + 1 ], ic = 3 * faces[ 3 * f + 2 ];
 			const e1x = p[ ib ] - p[ ia ], e1y = p[ ib + 1 ] - p[ ia + 1 ], e1z = p[ ib + 2 ] - p[ ia + 2 ];
 			const e2x = p[ ic ] - p[ ia ], e2y = p[ ic + 1 ] - p[ ia + 1 ], e2z = p[ ic + 2 ] - p[ ia + 2 ];
-			const f1x = normals[ ib ] - normals[ ia ], f1y = normals[ ib + 1 ] - normals[ ia + 1 ], f1z = normals[ ib + 2 ] - normals[ ia + 2 ];
-			const f2x = normals[ ic ] - normals[ ia ], f2y = normals[ ic + 1 ] - normals[ ia + 1 ], f2z = normals[ ic + 2 ] - normals[ ia + 2 ];
+			const f1x = normals[ ib ] - normals[ ia ], f1y = normals[ ib + 1 ] - normals[ ia + 1 ];
+			const f1z = normals[ ib + 2 ] - normals[ ia + 2 ];
+			const f2x = normals[ ic ] - normals[ ia ], f2y = normals[ ic + 1 ] - normals[ ia + 1 ];
+			const f2z = normals[ ic + 2 ] - normals[ ia + 2 ];
 			const gx = - normals[ ia ], gy = - normals[ ia + 1 ], gz = - normals[ ia + 2 ];
 			// N0 = E1×E2, N1 = F1×E2 + E1×F2, N2 = F1×F2.
 			const n0x = e1y * e2z - e1z * e2y, n0y = e1z * e2x - e1x * e2z, n0z = e1x * e2y - e1y * e2x;
@@ -348,8 +213,10 @@ export class OuterCells {
 		const x = _query[ 0 ], y = _query[ 1 ], z = _query[ 2 ];
 		const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
 		// Relative to a(t), so large t loses nothing to the probes' absolute coordinates.
-		const e1x = p[ b ] - p[ a ] + t * ( n[ b ] - n[ a ] ), e1y = p[ b + 1 ] - p[ a + 1 ] + t * ( n[ b + 1 ] - n[ a + 1 ] ), e1z = p[ b + 2 ] - p[ a + 2 ] + t * ( n[ b + 2 ] - n[ a + 2 ] );
-		const e2x = p[ c ] - p[ a ] + t * ( n[ c ] - n[ a ] ), e2y = p[ c + 1 ] - p[ a + 1 ] + t * ( n[ c + 1 ] - n[ a + 1 ] ), e2z = p[ c + 2 ] - p[ a + 2 ] + t * ( n[ c + 2 ] - n[ a + 2 ] );
+		const e1x = p[ b ] - p[ a ] + t * ( n[ b ] - n[ a ] ), e1y = p[ b + 1 ] - p[ a + 1 ] + t * ( n[ b + 1 ] - n[ a + 1 ] );
+		const e1z = p[ b + 2 ] - p[ a + 2 ] + t * ( n[ b + 2 ] - n[ a + 2 ] );
+		const e2x = p[ c ] - p[ a ] + t * ( n[ c ] - n[ a ] ), e2y = p[ c + 1 ] - p[ a + 1 ] + t * ( n[ c + 1 ] - n[ a + 1 ] );
+		const e2z = p[ c + 2 ] - p[ a + 2 ] + t * ( n[ c + 2 ] - n[ a + 2 ] );
 		const dx = x - p[ a ] - t * n[ a ], dy = y - p[ a + 1 ] - t * n[ a + 1 ], dz = z - p[ a + 2 ] - t * n[ a + 2 ];
 		const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
 		const nn = nx * nx + ny * ny + nz * nz;
@@ -418,7 +285,8 @@ export class OuterCells {
 
 		for ( let f = 0, n = this.faces.length / 3; f < n; f ++ ) {
 
-			if ( this.solveQuery( f, _solve ) && _solve[ 1 ] >= - OUTER_EPSILON && _solve[ 2 ] >= - OUTER_EPSILON && _solve[ 3 ] >= - OUTER_EPSILON ) {
+			const found = this.solveQuery( f, _solve );
+			if ( found && _solve[ 1 ] >= - OUTER_EPSILON && _solve[ 2 ] >= - OUTER_EPSILON && _solve[ 3 ] >= - OUTER_EPSILON ) {
 
 				out[ 0 ] = _solve[ 0 ]; out[ 1 ] = _solve[ 1 ]; out[ 2 ] = _solve[ 2 ]; out[ 3 ] = _solve[ 3 ];
 				return f;
@@ -433,275 +301,11 @@ export class OuterCells {
 
 }
 
-// Rounds of smoothing untangle() may take (a round costs O(hull faces) and runs only while some
-// cell still folds; very flat random layouts need a dozen or more).
-const UNTANGLE_ROUNDS = 40;
-
-// How steep over each adjacent face a smoothed normal must stay, as a fraction of the
-// angle-weighted normal's steepness there.
-const MIN_STEEPNESS = 0.1;
-
-// Least cosine between a ray and the normal of a hull face it starts from: the sweep must leave the
-// face (a ray along the face would give a cell of zero thickness there).
-const MIN_OUTWARD = 1e-9;
-
-// Weights of the radial direction in the normals of the vertices of cells that still fold after
-// smoothing (see `unfold`), step by step; the last, 1, is the purely radial normal.
-const RADIAL_BLENDS = [ 0, 0.125, 0.25, 0.5, 1 ];
-
-// Rounds of `unfold` before every hull vertex is made radial (a bound on the build's time: each
-// round costs O(hull faces); the survey's flat layouts need a few).
-const RADIAL_ROUNDS = 64;
-
-/**
- * Whether outer cell f is not a one-to-one sweep: the map (w, t) ↦ Σ wᵢ (pᵢ + t nᵢ) (w in the
- * triangle, t ≥ 0) must have a positive Jacobian everywhere. That Jacobian is
- * det[E1 + tF1, E2 + tF2, Σ wᵢ nᵢ] = N(t) · Σ wᵢ nᵢ with N(t) = N0 + t N1 + t² N2 the moved
- * triangle's normal; it is linear in w, so it is positive on the triangle iff the three quadratics
- * qᵢ(t) = N(t) · nᵢ are positive for t ≥ 0. At t = 0 that says each ray leaves the face
- * (nᵢ · N0 > 0); far away, since (F1 × F2) · nᵢ = det[na, nb, nc] for each i, that the triangle of
- * normals keeps its orientation (the sweep keeps moving outwards). When every cell passes, the
- * sweep of the whole hull surface S is a local homeomorphism S × [0, ∞) → outside that is the
- * identity on S and proper (|q| → ∞ with t, as every ray leaves its faces), hence a covering of
- * the outside (connected, simply connected) that is one-to-one near S: a bijection. So the cells
- * tile the outside with neither gaps nor overlaps, and the point of each cell is reached at a
- * single t. This is what the older test (the moved triangle's normal against its original one,
- * N(t) · N0 > 0) missed: two rays of a thin rim can cross each other's cells while each moved
- * triangle keeps its orientation. τ = t / L for scale-free tolerances; only τ ≤ FAR_LIMIT matters
- * (farther queries are pulled in), which absorbs rounding in flat parts (C ≈ 0, B ≈ 0).
- */
-function folds( p: Float64Array, faces: Uint32Array, n: Float64Array, f: number, L: number ): boolean {
-
-	const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
-	const e1x = p[ b ] - p[ a ], e1y = p[ b + 1 ] - p[ a + 1 ], e1z = p[ b + 2 ] - p[ a + 2 ];
-	const e2x = p[ c ] - p[ a ], e2y = p[ c + 1 ] - p[ a + 1 ], e2z = p[ c + 2 ] - p[ a + 2 ];
-	const f1x = n[ b ] - n[ a ], f1y = n[ b + 1 ] - n[ a + 1 ], f1z = n[ b + 2 ] - n[ a + 2 ];
-	const f2x = n[ c ] - n[ a ], f2y = n[ c + 1 ] - n[ a + 1 ], f2z = n[ c + 2 ] - n[ a + 2 ];
-	const n0x = e1y * e2z - e1z * e2y, n0y = e1z * e2x - e1x * e2z, n0z = e1x * e2y - e1y * e2x;
-	const n1x = ( f1y * e2z - f1z * e2y ) + ( e1y * f2z - e1z * f2y );
-	const n1y = ( f1z * e2x - f1x * e2z ) + ( e1z * f2x - e1x * f2z );
-	const n1z = ( f1x * e2y - f1y * e2x ) + ( e1x * f2y - e1y * f2x );
-	const n2x = f1y * f2z - f1z * f2y, n2y = f1z * f2x - f1x * f2z, n2z = f1x * f2y - f1y * f2x;
-	const area = Math.hypot( n0x, n0y, n0z );
-	if ( ! ( area > 0 ) ) return false;
-	const s0 = 1 / area, s1 = L / area, s2 = L * L / area, T = FAR_LIMIT;
-	for ( let k = 0; k < 3; k ++ ) {
-
-		const v = k === 0 ? a : k === 1 ? b : c, x = n[ v ], y = n[ v + 1 ], z = n[ v + 2 ];
-		const A = ( n0x * x + n0y * y + n0z * z ) * s0;
-		const B = ( n1x * x + n1y * y + n1z * z ) * s1;
-		const C = ( n2x * x + n2y * y + n2z * z ) * s2;
-		if ( ! ( A > MIN_OUTWARD ) ) return true;
-		if ( ! ( A + T * ( B + T * C ) > 0 ) ) return true;
-		// Interior minimum of the quadratic at τ = −B / 2C.
-		if ( C > 0 && B < 0 && - B < 2 * C * T && B * B >= 4 * A * C ) return true;
-
-	}
-
-	return false;
-
-}
-
-/**
- * Where angle-weighted normals make some outer cell fold (thin, irregular hulls: a flat box of
- * random probes has thin rim faces whose vertex normals point every which way), smooths the
- * normals of those cells' vertices towards the angle-weighted average of their neighbours' normals,
- * round by round until no cell folds. Each move is shortened as far as needed to keep the ray at
- * least MIN_STEEPNESS as steep over every adjacent face as the angle-weighted normal was
- * (n·n_f ≥ 0.1 × its minimum), so the sweeps still leave the hull. Hulls without folds (grids,
- * slabs, most volumes) keep their angle-weighted normals exactly. O(hull faces) per round.
- * @returns Whether some cell still folds (then `unfold` takes over).
- */
-function untangle( p: Float64Array, faces: Uint32Array, faceNormals: Float64Array, angles: Float64Array, normals: Float64Array, L: number ): boolean {
-
-	const faceCount = faces.length / 3, vertexCount = normals.length / 3;
-	let any = false;
-	for ( let f = 0; f < faceCount && ! any; f ++ ) any = folds( p, faces, normals, f, L );
-	if ( ! any ) return false;
-
-	// Faces around each vertex (compressed rows), and each vertex's least steepness over them.
-	const start = new Int32Array( vertexCount + 1 ), incident = new Int32Array( 3 * faceCount );
-	for ( let i = 0; i < faces.length; i ++ ) start[ faces[ i ] + 1 ] ++;
-	for ( let v = 0; v < vertexCount; v ++ ) start[ v + 1 ] += start[ v ];
-	const fill = start.slice( 0, vertexCount );
-	for ( let i = 0; i < faces.length; i ++ ) incident[ fill[ faces[ i ] ] ++ ] = ( i / 3 ) | 0;
-	const steepness = ( v: number, x: number, y: number, z: number ): number => {
-
-		let least = Infinity;
-		for ( let i = start[ v ]; i < start[ v + 1 ]; i ++ ) {
-
-			const f = 3 * incident[ i ];
-			least = Math.min( least, x * faceNormals[ f ] + y * faceNormals[ f + 1 ] + z * faceNormals[ f + 2 ] );
-
-		}
-
-		return least;
-
-	};
-
-	const floor = new Float64Array( vertexCount );
-	for ( let v = 0; v < vertexCount; v ++ ) {
-
-		const least = steepness( v, normals[ 3 * v ], normals[ 3 * v + 1 ], normals[ 3 * v + 2 ] );
-		floor[ v ] = least > 0 ? MIN_STEEPNESS * least : least;
-
-	}
-
-	// The vertices that move this round, as flags and as a list: rounds cost O(hull faces), not
-	// O(probes) (probes inside the hull are never mobile).
-	const mobile = new Uint8Array( vertexCount ), target = new Float64Array( normals.length ), moving = new Int32Array( vertexCount );
-	let movingCount = 0;
-	for ( let round = 0; round <= UNTANGLE_ROUNDS; round ++ ) {
-
-		for ( let m = 0; m < movingCount; m ++ ) {
-
-			const v = moving[ m ];
-			mobile[ v ] = 0;
-			target[ 3 * v ] = target[ 3 * v + 1 ] = target[ 3 * v + 2 ] = 0;
-
-		}
-
-		movingCount = 0;
-		let count = 0;
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			if ( ! folds( p, faces, normals, f, L ) ) continue;
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const v = faces[ 3 * f + k ];
-				if ( mobile[ v ] === 0 ) { mobile[ v ] = 1; moving[ movingCount ++ ] = v; }
-
-			}
-
-			count ++;
-
-		}
-
-		if ( count === 0 ) return false;
-		if ( round === UNTANGLE_ROUNDS ) break;
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
-			const mx = normals[ a ] + normals[ b ] + normals[ c ], my = normals[ a + 1 ] + normals[ b + 1 ] + normals[ c + 1 ], mz = normals[ a + 2 ] + normals[ b + 2 ] + normals[ c + 2 ];
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const v = faces[ 3 * f + k ], w = angles[ 3 * f + k ];
-				if ( mobile[ v ] === 0 ) continue;
-				target[ 3 * v ] += w * mx; target[ 3 * v + 1 ] += w * my; target[ 3 * v + 2 ] += w * mz;
-
-			}
-
-		}
-
-		for ( let m = 0; m < movingCount; m ++ ) {
-
-			const v = moving[ m ], i = 3 * v;
-			const tl = Math.hypot( target[ i ], target[ i + 1 ], target[ i + 2 ] );
-			if ( tl === 0 ) continue;
-			// Full step, then halves of it, back towards the current normal until steep enough.
-			for ( let step = 1; step > 1 / 16; step *= 0.5 ) {
-
-				const x = normals[ i ] + step * ( target[ i ] / tl - normals[ i ] ), y = normals[ i + 1 ] + step * ( target[ i + 1 ] / tl - normals[ i + 1 ] ), z = normals[ i + 2 ] + step * ( target[ i + 2 ] / tl - normals[ i + 2 ] );
-				const l = Math.hypot( x, y, z );
-				if ( l === 0 || steepness( v, x / l, y / l, z / l ) < floor[ v ] ) continue;
-				normals[ i ] = x / l; normals[ i + 1 ] = y / l; normals[ i + 2 ] = z / l;
-				break;
-
-			}
-
-		}
-
-	}
-
-	return true;
-
-}
-
-/**
- * The guaranteed end of the normals' repair, for cells smoothing left folded: raises the normals
- * of their vertices, round by round, one step of RADIAL_BLENDS towards the radial direction from
- * the hull vertices' centroid c (strictly inside the hull), until no cell folds. Radial normals
- * never fold: with uᵢ = pᵢ − c and nᵢ = uᵢ / |uᵢ|, the moved vertex is c + sᵢ(t) uᵢ with
- * sᵢ(t) = 1 + t / |uᵢ|, so the moved triangle stays on the three edges of the cone from c over the
- * face, and qₐ(t) = N(t) · nₐ = s_b(t) s_c(t) det[uₐ, u_b, u_c] / |uₐ| > 0 (likewise for b and c):
- * those cells are the cones from c beyond their faces. Whether a cell folds depends on its three
- * normals only, so a folded cell always has a vertex below the radial step, and every round raises
- * the total of the steps: at most (RADIAL_BLENDS.length − 1) × hull vertices rounds, of O(hull
- * faces) each. Past RADIAL_ROUNDS every hull vertex takes its radial normal (all cones: a tiling).
- * Only the neighbourhood of the folds moves, by as little as this ladder allows.
- */
-function unfold( p: Float64Array, faces: Uint32Array, normals: Float64Array, L: number ): void {
-
-	const faceCount = faces.length / 3, vertexCount = normals.length / 3;
-	const onHull = new Uint8Array( vertexCount );
-	let cx = 0, cy = 0, cz = 0, hullCount = 0;
-	for ( let i = 0; i < faces.length; i ++ ) {
-
-		const v = faces[ i ];
-		if ( onHull[ v ] ) continue;
-		onHull[ v ] = 1; hullCount ++;
-		cx += p[ 3 * v ]; cy += p[ 3 * v + 1 ]; cz += p[ 3 * v + 2 ];
-
-	}
-
-	cx /= hullCount; cy /= hullCount; cz /= hullCount;
-	const base = normals.slice(), level = new Uint8Array( vertexCount ), top = RADIAL_BLENDS.length - 1;
-	const blend = ( v: number, s: number ): void => {
-
-		const i = 3 * v, ux = p[ i ] - cx, uy = p[ i + 1 ] - cy, uz = p[ i + 2 ] - cz, ul = Math.hypot( ux, uy, uz );
-		if ( s === 1 ) { normals[ i ] = ux / ul; normals[ i + 1 ] = uy / ul; normals[ i + 2 ] = uz / ul; return; }
-		const x = ( 1 - s ) * base[ i ] + s * ux / ul, y = ( 1 - s ) * base[ i + 1 ] + s * uy / ul, z = ( 1 - s ) * base[ i + 2 ] + s * uz / ul;
-		const l = Math.hypot( x, y, z );
-		normals[ i ] = x / l; normals[ i + 1 ] = y / l; normals[ i + 2 ] = z / l;
-
-	};
-
-	for ( let round = 0; round < RADIAL_ROUNDS; round ++ ) {
-
-		// Raise this round from the folds seen at its start (the same for every face of the round).
-		let any = false;
-		for ( let f = 0; f < faceCount; f ++ ) {
-
-			if ( ! folds( p, faces, normals, f, L ) ) continue;
-			any = true;
-			for ( let k = 0; k < 3; k ++ ) {
-
-				const v = faces[ 3 * f + k ];
-				// 128 + level marks "raise once this round".
-				if ( level[ v ] < top ) level[ v ] |= 128;
-
-			}
-
-		}
-
-		if ( ! any ) return;
-		for ( let v = 0; v < vertexCount; v ++ ) {
-
-			if ( level[ v ] < 128 ) continue;
-			level[ v ] = ( level[ v ] & 127 ) + 1;
-			blend( v, RADIAL_BLENDS[ level[ v ] ] );
-
-		}
-
-	}
-
-	for ( let f = 0; f < faceCount; f ++ ) if ( folds( p, faces, normals, f, L ) ) {
-
-		for ( let v = 0; v < vertexCount; v ++ ) if ( onHull[ v ] ) blend( v, 1 );
-		return;
-
-	}
-
-}
-
 /**
  * Smallest root τ ≥ 0 of c0 + c1 τ + c2 τ² + c3 τ³ (from `_cubic`), left in `_root[0]`; false when
- * there is none. Works on s = τ / (1 + τ) ∈ [0, 1), where the cubic becomes the bounded
- * Bernstein-like form g(s) = c0 u³ + c1 s u² + c2 s² u + c3 s³ (u = 1 − s): any of the coefficients
- * may vanish (flat parts of the hull give a linear equation) without special cases. The interval is
- * split at g's critical points into monotone pieces; the first piece whose ends differ in sign
- * holds the root, found by Newton steps kept inside the bracket, then polished by Newton in τ
- * (exact far away, where s ≈ 1). One function, so nothing is passed as a boxed double.
+ * there is none. Bracketed Newton on s = τ / (1 + τ) ∈ [0, 1), where any coefficient may vanish
+ * without special cases, then polished in τ (the method: docs/outer-cells.md). One function, so
+ * nothing is passed as a boxed double.
  */
 function smallestRoot(): boolean {
 
