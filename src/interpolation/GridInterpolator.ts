@@ -1,4 +1,4 @@
-import { assertArrayLike, assertFinite, assertInteger } from '../validate.js';
+import { checkGridSpec } from './gridSpec.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 /**
@@ -32,21 +32,7 @@ export class GridInterpolator implements ProbeInterpolator {
 	 */
 	constructor( min: ArrayLike<number>, max: ArrayLike<number>, counts: ArrayLike<number> ) {
 
-		for ( const [ name, value ] of [ [ 'min', min ], [ 'max', max ], [ 'counts', counts ] ] as const ) {
-
-			assertArrayLike( 'GridInterpolator', name, value );
-			if ( value.length !== 3 ) throw new RangeError( `GridInterpolator: ${name} must have 3 entries (x, y, z), got ${value.length}.` );
-			assertFinite( 'GridInterpolator', name, value );
-
-		}
-
-		for ( let a = 0; a < 3; a ++ ) {
-
-			assertInteger( 'GridInterpolator', `counts[${a}]`, counts[ a ], 2, 1 << 16 );
-			if ( ! ( max[ a ] > min[ a ] ) ) throw new RangeError( `GridInterpolator: max[${a}] (${max[ a ]}) must be greater than min[${a}] (${min[ a ]}).` );
-
-		}
-
+		checkGridSpec( 'GridInterpolator', min, max, counts );
 		this.min = Float64Array.from( min );
 		this.max = Float64Array.from( max );
 		this.counts = Uint32Array.from( counts );
@@ -82,7 +68,9 @@ export class GridInterpolator implements ProbeInterpolator {
 	 * Allocation-free.
 	 * @returns The box index, x fastest (the hint is not needed on a grid and is ignored).
 	 */
-	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[] ): number {
+	interpolate(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[],
+	): number {
 
 		const nx = this.counts[ 0 ], ny = this.counts[ 1 ], nz = this.counts[ 2 ];
 		const fx = cellCoordinate( x, this.min[ 0 ], this.max[ 0 ], nx );

@@ -1,5 +1,5 @@
-import { assertArrayLike, assertFinite, assertInteger } from '../validate.js';
 import { GridInterpolator } from '../interpolation/GridInterpolator.js';
+import { checkGridSpec } from '../interpolation/gridSpec.js';
 
 /**
  * Probe positions on a regular grid over a box: the paper's baseline layout and the usual starting
@@ -17,21 +17,7 @@ export function placeGrid( min: ArrayLike<number>, max: ArrayLike<number>, count
 
 	// Checked here as well as in GridInterpolator so that a bad call names placeGrid, the function
 	// the user called.
-	for ( const [ name, value ] of [ [ 'min', min ], [ 'max', max ], [ 'counts', counts ] ] as const ) {
-
-		assertArrayLike( 'placeGrid', name, value );
-		if ( value.length !== 3 ) throw new RangeError( `placeGrid: ${name} must have 3 entries (x, y, z), got ${value.length}.` );
-		assertFinite( 'placeGrid', name, value );
-
-	}
-
-	for ( let a = 0; a < 3; a ++ ) {
-
-		assertInteger( 'placeGrid', `counts[${a}]`, counts[ a ], 2, 1 << 16 );
-		if ( ! ( max[ a ] > min[ a ] ) ) throw new RangeError( `placeGrid: max[${a}] (${max[ a ]}) must be greater than min[${a}] (${min[ a ]}).` );
-
-	}
-
+	checkGridSpec( 'placeGrid', min, max, counts );
 	return new GridInterpolator( min, max, counts ).positions;
 
 }
