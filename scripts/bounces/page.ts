@@ -12,7 +12,7 @@
 
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/index.js';
-import { captureBounces } from '../../src/capture/captureBounces.js';
+import { captureBounces } from '../../src/runtime/captureBounces.js';
 import type { SceneHost } from '../../scenes/loadOBJScene.js';
 import { toBase64 } from '../experiment/pageData.js';
 

@@ -136,6 +136,25 @@ export class ProbeZones {
 
 }
 
+/**
+ * The index of the zone named `name`, for an option naming a zone.
+ * @throws Error when there are no zones; RangeError, listing the zones, when none has that name.
+ */
+export function zoneIndexOf( where: string, zones: ProbeZones | null, name: string ): number {
+
+	if ( zones === null ) throw new Error( `${where}: zone "${name}" given, but the volume has no zones.` );
+	const index = zones.indexOf( name );
+	if ( index < 0 ) {
+
+		const names = zones.zones.map( ( zone ) => `"${zone.name}"` ).join( ', ' );
+		throw new RangeError( `${where}: unknown zone "${name}"; the zones are ${names}.` );
+
+	}
+
+	return index;
+
+}
+
 function boundsOf( name: string, bounds: BoxLike | readonly BoxLike[] | undefined ): Float64Array {
 
 	if ( bounds === undefined ) return new Float64Array( 0 );

@@ -25,7 +25,7 @@
 
 import { afterAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
-import { captureBounces } from '../../src/capture/captureBounces.js';
+import { captureBounces } from '../../src/runtime/captureBounces.js';
 import { ProbeCapturer } from '../../src/capture/ProbeCapturer.js';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { evaluateIrradiance } from '../../src/sh/index.js';
@@ -115,6 +115,13 @@ describe( 'captureBounces: bad input', () => {
 		volume.remove( lit );
 		await expect( captureBounces( volume, renderer, scene, { bounces: 1, output: 'vertex' as never } ) ).rejects.toThrow( /options\.output/ );
 		await expect( captureBounces( volume, renderer, scene, { bounces: 1, hideInBounces: [ 3 as never ] } ) ).rejects.toThrow( /hideInBounces\[0\]/ );
+
+	} );
+
+	it( 'volume.capture with options.bounces: the same checks, naming LightProbeVolume.capture', async () => {
+
+		for ( const bounces of [ - 1, 1.5, 17, NaN ] ) await expect( volume.capture( renderer, scene, { bounces } ) ).rejects.toThrow( /LightProbeVolume\.capture: options\.bounces/ );
+		await expect( volume.capture( renderer, scene, { bounces: 1, output: 'vertex' as never } ) ).rejects.toThrow( /LightProbeVolume\.capture: options\.output/ );
 
 	} );
 
@@ -357,6 +364,22 @@ describe.skipIf( ! ctx.renderer )( `captureBounces on a real GL context (headles
 		render();
 		expect( { ...renderer.info.memory, programs: renderer.info.programs!.length } ).toEqual( baseline );
 		s.dispose();
+
+	} );
+
+	it( 'volume.capture( renderer, scene, { bounces: 2 } ) is captureBounces with bounces: 2, bit for bit, and returns the volume', async () => {
+
+		const scene = new THREE.Scene();
+		const room = furnace( lambertWall( ALBEDO, LE ) );
+		scene.add( room );
+		const a = new LightProbeVolume( { positions: PROBES } ), b = new LightProbeVolume( { positions: PROBES } );
+		const passes: number[] = [];
+		expect( await a.capture( renderer, scene, { bounces: 2, ...CAPTURE, onPass: ( pass ) => passes.push( pass ) } ) ).toBe( a );
+		await captureBounces( b, renderer, scene, { bounces: 2, ...CAPTURE } );
+		expect( passes ).toEqual( [ 0, 1, 2 ] );
+		expect( Array.from( a.sh ) ).toEqual( Array.from( b.sh ) );
+		expect( a.captureSettings ).toEqual( b.captureSettings );
+		disposeMesh( room );
 
 	} );
 

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
+import { IncrementalTetrahedralMesh } from '../../src/interpolation/IncrementalTetrahedralMesh.js';
 import { TetrahedralMesh } from '../../src/interpolation/TetrahedralMesh.js';
 import { DegenerateInputError } from '../../src/tetrahedra/tetrahedralize.js';
 import { randomPoints, seededRandom } from '../helpers/pointSets.js';
@@ -62,7 +63,8 @@ describe( 'LightProbeVolume incremental edits', () => {
 	it( 'moves, adds and removes give the same light as a volume built from scratch (sample and object uniforms)', () => {
 
 		const volume = new LightProbeVolume( { positions: randomPoints( 40, 3, 10 ), sh: randomSH( 40, 4 ) } );
-		expect( ( volume.interpolator as TetrahedralMesh ).dynamic ).toBeNull();
+		expect( volume.interpolator ).toBeInstanceOf( TetrahedralMesh );
+		expect( volume.interpolator ).not.toBeInstanceOf( IncrementalTetrahedralMesh );
 		const objects = [ litObject( 5, 5, 5 ), litObject( 1, 9, 2 ), litObject( 11, - 1, 4 ) ];
 		for ( const object of objects ) volume.add( object );
 		const random = seededRandom( 9 );
@@ -94,7 +96,7 @@ describe( 'LightProbeVolume incremental edits', () => {
 		}
 
 		expect( Math.min( adds, removes, moves ) ).toBeGreaterThan( 5 );
-		expect( ( volume.interpolator as TetrahedralMesh ).dynamic ).not.toBeNull();
+		expect( volume.interpolator ).toBeInstanceOf( IncrementalTetrahedralMesh );
 		expect( volume.count ).toBe( 40 + adds );
 		expect( volume.sh.length ).toBe( 27 * volume.count );
 		expect( volume.names.length ).toBe( volume.count );

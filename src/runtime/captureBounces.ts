@@ -1,46 +1,18 @@
 import { Layers, type BufferGeometry, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer } from 'three';
-import type { LightProbeVolume, LightProbeVolumeCaptureOptions } from '../runtime/LightProbeVolume.js';
-import { ProbeVertexLighting } from '../runtime/ProbeVertexLighting.js';
-import { getProbeVolumeUniforms } from '../runtime/patchMaterial.js';
 import { SH_FLOATS, assertInteger } from '../validate.js';
+import type { LightProbeVolume } from './LightProbeVolume.js';
+import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
+import { ProbeVertexLighting } from './ProbeVertexLighting.js';
+import { getProbeVolumeUniforms } from './patchMaterial.js';
 
-/** Options of {@link captureBounces}: the capture options of `LightProbeVolume.capture` plus these. */
+/**
+ * Options of {@link captureBounces}: the capture options of `LightProbeVolume.capture`, whose
+ * bounce options (`staticMeshes`, `hideInBounces`, `output`, `onPass`) apply, with `bounces` required.
+ */
 export type CaptureBouncesOptions = LightProbeVolumeCaptureOptions & {
 
 	/** Bounces of diffuse interreflection to add, 0..16: `bounces + 1` captures in all. */
 	bounces: number;
-
-	/**
-	 * The static meshes lit by the previous pass's probes during the bounce passes. Default: every
-	 * visible `Mesh` of the scene with a `MeshStandardMaterial`/`MeshPhysicalMaterial` that the
-	 * capture would draw — not skinned or instanced, not inside an object registered with
-	 * `volume.add()` or listed in `exclude`, not rejected by `filter`, on a layer the cube camera
-	 * sees, and with no probe-patched material already (such a mesh has probe light of its own).
-	 */
-	staticMeshes?: readonly Mesh[];
-
-	/**
-	 * Objects hidden during the bounce passes (pass ≥ 1) only: the scene's stand-ins for indirect
-	 * light — an `AmbientLight` or `HemisphereLight` fill, a faint emissive "ambient" glow — which
-	 * the computed bounces replace. Pass 0 is captured with them, as an ordinary capture would be.
-	 * To have no stand-in in any pass, turn it off before calling (or use `exclude`).
-	 */
-	hideInBounces?: Iterable<Object3D>;
-
-	/**
-	 * What the static meshes' vertices store during the bounce passes (see
-	 * `ProbeVertexLightingOptions.output`): `'irradiance'` (default, 12 bytes a vertex, normal and
-	 * bump maps do not change the probe light) or `'sh'` (112 bytes a vertex, per-pixel normals).
-	 * In Sibenik (bump-mapped stone) both give the same bounce (+78.6 % in the nave after one pass).
-	 */
-	output?: 'irradiance' | 'sh';
-
-	/**
-	 * Called after each pass with the pass number (0 = direct light only) and `volume.sh` as it is
-	 * now — the volume's own array, overwritten by the next pass: copy it to keep it. During the
-	 * call the static meshes still carry the light that pass was captured with (none in pass 0).
-	 */
-	onPass?: ( pass: number, sh: Float32Array ) => void;
 
 };
 
@@ -100,6 +72,9 @@ const MAX_BOUNCES = 16;
  * a faint emissive glow on every surface) would be counted twice: turn them off, or pass them in
  * `hideInBounces` so the bounces replace them from pass 1 on.
  *
+ * `volume.capture( renderer, scene, { bounces: 2, … } )` does the same and returns the volume;
+ * this function also returns the statistics of each pass.
+ *
  * ```js
  * scene.remove( fill ); // the hemisphere light that stood in for bounced light
  * const { passes } = await captureBounces( volume, renderer, scene, { bounces: 2, resolution: 32 } );
@@ -110,14 +85,34 @@ const MAX_BOUNCES = 16;
  * @param scene The scene to capture.
  * @param options See {@link CaptureBouncesOptions}.
  */
-export async function captureBounces( volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions ): Promise<CaptureBouncesResult> {
+export function captureBounces(
+	volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions,
+): Promise<CaptureBouncesResult> {
 
-	const where = 'captureBounces';
-	if ( ! volume || typeof volume.capture !== 'function' || ! ( volume.sh instanceof Float32Array ) ) throw new TypeError( `${where}: volume must be a LightProbeVolume.` );
+	return captureWithBounces( 'captureBounces', volume, renderer, scene, options );
+
+}
+
+/** {@link captureBounces} with errors naming `where` (`LightProbeVolume.capture` calls it for its `bounces` option). */
+export async function captureWithBounces(
+	where: string, volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions,
+): Promise<CaptureBouncesResult> {
+
+	if ( ! volume || typeof volume.capture !== 'function' || ! ( volume.sh instanceof Float32Array ) ) {
+
+		throw new TypeError( `${where}: volume must be a LightProbeVolume.` );
+
+	}
+
 	if ( ! options || typeof options !== 'object' ) throw new TypeError( `${where}: options must be an object with at least { bounces }.` );
 	const { bounces, staticMeshes, hideInBounces, output = 'irradiance', onPass, ...capture } = options;
 	assertInteger( where, 'options.bounces', bounces, 0, MAX_BOUNCES );
-	if ( output !== 'irradiance' && output !== 'sh' ) throw new RangeError( `${where}: options.output is "${String( output )}"; expected 'irradiance' or 'sh'.` );
+	if ( output !== 'irradiance' && output !== 'sh' ) {
+
+		throw new RangeError( `${where}: options.output is "${String( output )}"; expected 'irradiance' or 'sh'.` );
+
+	}
+
 	if ( onPass !== undefined && typeof onPass !== 'function' ) throw new TypeError( `${where}: options.onPass must be a function.` );
 	// Consumed twice (default mesh selection and every capture): make it an array once.
 	if ( capture.exclude !== undefined ) capture.exclude = [ ...capture.exclude ];
@@ -125,7 +120,11 @@ export async function captureBounces( volume: LightProbeVolume, renderer: WebGLR
 	const hidden = hideInBounces !== undefined ? [ ...hideInBounces ] : [];
 	hidden.forEach( ( object, i ) => {
 
-		if ( ( object as { isObject3D?: boolean } )?.isObject3D !== true ) throw new TypeError( `${where}: options.hideInBounces[${i}] is not a three.js Object3D.` );
+		if ( ( object as { isObject3D?: boolean } )?.isObject3D !== true ) {
+
+			throw new TypeError( `${where}: options.hideInBounces[${i}] is not a three.js Object3D.` );
+
+		}
 
 	} );
 
@@ -226,7 +225,8 @@ function isLightable( mesh: Mesh ): boolean {
 
 function standardMaterials( mesh: Mesh ): Material[] {
 
-	return ( Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ] ).filter( ( material ) => ( material as { isMeshStandardMaterial?: boolean } )?.isMeshStandardMaterial === true );
+	const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
+	return materials.filter( ( material ) => ( material as { isMeshStandardMaterial?: boolean } )?.isMeshStandardMaterial === true );
 
 }
 
@@ -236,14 +236,32 @@ function checkMeshes( where: string, meshes: readonly Mesh[] ): Mesh[] {
 	const unique = [ ...new Set( meshes ) ];
 	unique.forEach( ( mesh, i ) => {
 
-		if ( ! mesh || ( mesh as { isMesh?: boolean } ).isMesh !== true ) throw new TypeError( `${where}: options.staticMeshes[${i}] is not a three.js Mesh.` );
+		if ( ! mesh || ( mesh as { isMesh?: boolean } ).isMesh !== true ) {
+
+			throw new TypeError( `${where}: options.staticMeshes[${i}] is not a three.js Mesh.` );
+
+		}
+
 		const name = mesh.name ? ` ("${mesh.name}")` : '';
-		if ( ! isLightable( mesh ) ) throw new TypeError( `${where}: options.staticMeshes[${i}]${name} is skinned, instanced or has no position attribute; bounce light is sampled at static vertices.` );
+		if ( ! isLightable( mesh ) ) {
+
+			throw new TypeError( `${where}: options.staticMeshes[${i}]${name} is skinned, instanced or has no position attribute; `
+				+ 'bounce light is sampled at static vertices.' );
+
+		}
+
 		const materials = standardMaterials( mesh );
-		if ( materials.length === 0 ) throw new TypeError( `${where}: options.staticMeshes[${i}]${name} has no MeshStandardMaterial or MeshPhysicalMaterial to light.` );
+		if ( materials.length === 0 ) {
+
+			throw new TypeError( `${where}: options.staticMeshes[${i}]${name} has no MeshStandardMaterial or MeshPhysicalMaterial `
+				+ 'to light.' );
+
+		}
+
 		if ( materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) {
 
-			throw new Error( `${where}: options.staticMeshes[${i}]${name} already has a probe-lit (patched) material; it would receive probe light twice.` );
+			throw new Error( `${where}: options.staticMeshes[${i}]${name} already has a probe-lit (patched) material; `
+				+ 'it would receive probe light twice.' );
 
 		}
 

@@ -1,0 +1,225 @@
+import { blendSH } from '../interpolation/blendSH.js';
+import { IncrementalTetrahedralMesh } from '../interpolation/IncrementalTetrahedralMesh.js';
+import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import { PROBE_ROLES, isProbeRole, type ProbeRole } from '../roles.js';
+import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
+import { SH_FLOATS, assertSH } from '../validate.js';
+import type { AddProbeOptions, ProbePosition } from './LightProbeVolumeOptions.js';
+import type { LitObject } from './litObjects.js';
+import { MAX_WEIGHTS, invalidateVisibility } from './ProbeWeighting.js';
+import type { ProbeZones } from './ProbeZones.js';
+
+/** The fields of a `LightProbeVolume` that {@link ProbeEdits} reads and replaces. */
+export interface EditedVolume {
+
+	positions: Float64Array;
+	sh: Float32Array;
+	interpolator: ProbeInterpolator;
+	readonly names: string[];
+	readonly roles: ProbeRole[];
+	readonly zones: ProbeZones | null;
+	readonly count: number;
+
+}
+
+const _indices = new Uint32Array( MAX_WEIGHTS );
+const _weights = new Float32Array( MAX_WEIGHTS );
+const _sh = new Float32Array( SH_FLOATS );
+
+/**
+ * Probe editing of a `LightProbeVolume` (`moveProbe`, `addProbe`, `removeProbe`): the first edit
+ * turns its `TetrahedralMesh` into an {@link IncrementalTetrahedralMesh} (one full
+ * tetrahedralization) updated locally from then on; added probes' SH go into a capacity-doubling
+ * store; moved and added probes are remembered as dirty until captured. Edits replace the
+ * volume's `positions` (and `sh` when adding) and keep its objects' walk hints in range.
+ */
+export class ProbeEdits {
+
+	/** Probes moved or added since they were last captured. */
+	readonly dirty = new Set<number>();
+
+	private readonly volume: EditedVolume;
+	private readonly lit: readonly LitObject[];
+	/** Capacity-doubling store behind `sh` once a probe was added (null before). */
+	private shStore: Float32Array | null = null;
+
+	/**
+	 * @param volume The edited volume.
+	 * @param lit Its registered objects (the array itself, whose entries change).
+	 */
+	constructor( volume: EditedVolume, lit: readonly LitObject[] ) {
+
+		this.volume = volume;
+		this.lit = lit;
+
+	}
+
+	/** The dirty probes, ascending. */
+	dirtyProbes(): number[] {
+
+		return Array.from( this.dirty ).sort( ( a, b ) => a - b );
+
+	}
+
+	/** Whether probe id `index` is in use (false for removed probes and out-of-range ids). */
+	isActive( index: number ): boolean {
+
+		const mesh = this.volume.interpolator;
+		if ( mesh instanceof IncrementalTetrahedralMesh ) return mesh.isActive( index );
+		return Number.isInteger( index ) && index >= 0 && index < this.volume.count;
+
+	}
+
+	/** `LightProbeVolume.moveProbe`. */
+	move( index: number, position: ProbePosition ): void {
+
+		const where = 'LightProbeVolume.moveProbe';
+		const [ x, y, z ] = readPosition( where, position );
+		this.assertActive( where, index );
+		const mesh = this.editableMesh( where );
+		mesh.moveProbe( index, x, y, z );
+		this.afterEdit( mesh );
+		this.dirty.add( index );
+
+	}
+
+	/** `LightProbeVolume.addProbe`. */
+	add( position: ProbePosition, options: AddProbeOptions ): number {
+
+		const where = 'LightProbeVolume.addProbe', volume = this.volume;
+		const [ x, y, z ] = readPosition( where, position );
+		const { name = '', role = 'fill', sh } = options;
+		if ( typeof name !== 'string' ) throw new TypeError( `${where}: options.name must be a string, got ${typeof name}.` );
+		if ( ! isProbeRole( role ) ) {
+
+			throw new RangeError( `${where}: options.role is "${role}"; expected one of ${PROBE_ROLES.join( ', ' )}.` );
+
+		}
+
+		if ( sh !== undefined ) assertSH( where, 'options.sh', sh, 1 );
+		const mesh = this.editableMesh( where );
+		if ( sh === undefined ) {
+
+			// Before the probe exists, so it does not weigh itself (its SH is still zero).
+			mesh.interpolate( x, y, z, _indices, _weights, - 1 );
+			blendSH( _indices, _weights, volume.sh, _sh, mesh.weightCount );
+
+		} else {
+
+			_sh.set( sh );
+
+		}
+
+		const index = mesh.addProbe( x, y, z );
+		const total = index + 1;
+		if ( this.shStore === null || this.shStore.length < SH_FLOATS * total ) {
+
+			const store = new Float32Array( SH_FLOATS * Math.max( 16, 2 * total ) );
+			store.set( volume.sh );
+			this.shStore = store;
+
+		}
+
+		volume.sh = this.shStore.subarray( 0, SH_FLOATS * total );
+		volume.sh.set( _sh, SH_FLOATS * index );
+		volume.names.push( name );
+		volume.roles.push( role );
+		this.afterEdit( mesh );
+		if ( sh === undefined ) this.dirty.add( index );
+		return index;
+
+	}
+
+	/** `LightProbeVolume.removeProbe`. */
+	remove( index: number ): void {
+
+		const where = 'LightProbeVolume.removeProbe';
+		this.assertActive( where, index );
+		const mesh = this.editableMesh( where );
+		mesh.removeProbe( index );
+		this.volume.sh.fill( 0, SH_FLOATS * index, SH_FLOATS * ( index + 1 ) );
+		this.dirty.delete( index );
+		this.afterEdit( mesh );
+
+	}
+
+	private assertActive( where: string, index: number ): void {
+
+		if ( ! this.isActive( index ) ) {
+
+			throw new RangeError( `${where}: ${index} is not a probe of this volume (0..${this.volume.count - 1}, not removed).` );
+
+		}
+
+	}
+
+	/**
+	 * The incremental mesh edits go through: the volume's own once made incremental, else one built
+	 * now over the current positions (a full tetrahedralization, once).
+	 */
+	private editableMesh( where: string ): IncrementalTetrahedralMesh {
+
+		const volume = this.volume;
+		if ( volume.zones !== null ) {
+
+			throw new Error( `${where}: the volume has lighting zones, whose own tetrahedralizations are not edited; `
+				+ 'create a new LightProbeVolume with the edited positions.' );
+
+		}
+
+		const current = volume.interpolator;
+		if ( ! ( current instanceof TetrahedralMesh ) ) {
+
+			throw new Error( `${where}: probes can be edited only with a tetrahedral interpolator; this volume's is a `
+				+ `${current.constructor?.name ?? 'custom interpolator'} (coplanar probes, or one passed in); `
+				+ 'create a new LightProbeVolume with the edited positions.' );
+
+		}
+
+		if ( current instanceof IncrementalTetrahedralMesh ) return current;
+		const mesh = new IncrementalTetrahedralMesh( new DynamicTetrahedralization( volume.positions ), { outside: current.outside } );
+		volume.interpolator = mesh;
+		volume.positions = mesh.positions;
+		// Cell ids of the old mesh mean nothing in the new one.
+		for ( const entry of this.lit ) if ( entry.zone < 0 ) entry.hint = - 1;
+		return mesh;
+
+	}
+
+	/** After an edit: new positions, hints kept in range (any in-range hint is a valid walk start), guard caches reset. */
+	private afterEdit( mesh: IncrementalTetrahedralMesh ): void {
+
+		this.volume.positions = mesh.positions;
+		const limit = mesh.cellCount + mesh.hullFaces.length / 3;
+		for ( const entry of this.lit ) {
+
+			if ( entry.zone < 0 && entry.hint >= limit ) entry.hint = - 1;
+			invalidateVisibility( entry );
+
+		}
+
+	}
+
+}
+
+/** `{ x, y, z }` or `[ x, y, z ]` as three finite numbers. */
+function readPosition( where: string, position: ProbePosition ): [ number, number, number ] {
+
+	if ( ! position || typeof position !== 'object' ) {
+
+		const got = position === null ? 'null' : typeof position;
+		throw new TypeError( `${where}: position must be { x, y, z } or [ x, y, z ], got ${got}.` );
+
+	}
+
+	const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
+	if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) {
+
+		throw new RangeError( `${where}: position must be three finite numbers, got (${x}, ${y}, ${z}).` );
+
+	}
+
+	return [ x, y, z ];
+
+}

@@ -1,0 +1,138 @@
+import { FloatType } from 'three';
+import type { ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
+import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
+import type { BakedCapture, BakedCaptureSettings, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
+import { PROBE_ROLES, type ProbeRole } from '../roles.js';
+import { SH_FLOATS } from '../validate.js';
+import type { LightProbeVolumeCaptureOptions, LightProbeVolumeParameters } from './LightProbeVolumeOptions.js';
+import type { BoxLike, ProbeZones } from './ProbeZones.js';
+
+/*
+ * Between a `LightProbeVolume` and the baked format (`src/io`): the data a file holds, the
+ * constructor parameters a file gives, and the capture settings stored with a bake.
+ */
+
+/** The fields of a `LightProbeVolume` a baked file holds. */
+export interface BakedSource {
+
+	readonly positions: Float64Array;
+	readonly sh: Float32Array;
+	readonly names: readonly string[];
+	readonly roles: readonly ProbeRole[];
+	readonly interpolator: ProbeInterpolator;
+	readonly zones: ProbeZones | null;
+	readonly captureSettings: BakedCapture;
+	readonly metadata: string;
+	readonly count: number;
+	isProbeActive( index: number ): boolean;
+
+}
+
+/** The constructor parameters a baked file gives. */
+export type BakedParameters = Required<Pick<LightProbeVolumeParameters, 'positions' | 'sh' | 'names' | 'roles'>>
+	& Pick<LightProbeVolumeParameters, 'zones' | 'interpolator'>;
+
+/**
+ * `LightProbeVolume.toBakedData`: positions, SH, the tetrahedralization (when the interpolator is
+ * a `TetrahedralMesh`), names, roles, zones, capture settings and metadata — the volume's own
+ * arrays, except after `removeProbe()`, when the live probes are renumbered into new arrays.
+ */
+export function toBakedVolumeInput( volume: BakedSource ): BakedVolumeInput {
+
+	const mesh = volume.interpolator instanceof TetrahedralMesh ? volume.interpolator : null;
+	const count = volume.count;
+	let active = 0;
+	for ( let i = 0; i < count; i ++ ) if ( volume.isProbeActive( i ) ) active ++;
+	if ( mesh && active < count ) {
+
+		// Probes removed by removeProbe() leave empty id slots: the file holds the live probes
+		// only, renumbered in order (tetrahedron ids and neighbour links do not change).
+		const id = new Int32Array( count ).fill( - 1 ), keep: number[] = [];
+		for ( let i = 0; i < count; i ++ ) if ( volume.isProbeActive( i ) ) { id[ i ] = keep.length; keep.push( i ); }
+		const positions = new Float64Array( 3 * active ), sh = new Float32Array( SH_FLOATS * active );
+		keep.forEach( ( i, k ) => {
+
+			positions.set( volume.positions.subarray( 3 * i, 3 * i + 3 ), 3 * k );
+			sh.set( volume.sh.subarray( SH_FLOATS * i, SH_FLOATS * ( i + 1 ) ), SH_FLOATS * k );
+
+		} );
+		return {
+			positions, sh, names: keep.map( ( i ) => volume.names[ i ] ), roles: keep.map( ( i ) => volume.roles[ i ] ),
+			tetrahedra: mesh.tetrahedra.map( ( v ) => id[ v ] ), neighbors: mesh.neighbors,
+			capture: volume.captureSettings, metadata: volume.metadata,
+		};
+
+	}
+
+	return {
+		positions: volume.positions.subarray( 0, 3 * count ), sh: volume.sh.subarray( 0, SH_FLOATS * count ),
+		names: volume.names, roles: volume.roles,
+		tetrahedra: mesh?.tetrahedra, neighbors: mesh?.neighbors,
+		zones: volume.zones?.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: zone.bounds } ) ),
+		capture: volume.captureSettings, metadata: volume.metadata,
+	};
+
+}
+
+/**
+ * The constructor parameters of decoded baked data: the stored tetrahedralization as the
+ * interpolator (checked in O(n)), or none (the default interpolator is built).
+ */
+export function parametersFromBakedData( data: BakedVolumeData ): BakedParameters {
+
+	const interpolator = data.tetrahedra.length > 0
+		? TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors )
+		: undefined;
+	const zones = data.zones.length > 0
+		? data.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: boxes( zone.bounds ) } ) )
+		: undefined;
+	return { positions: data.positions, sh: data.sh, names: data.names, roles: data.roles, zones, interpolator };
+
+}
+
+/** The capture settings of `LightProbeVolume.capture` worth storing with a bake, per role too. */
+export function bakedCaptureSettings( options: LightProbeVolumeCaptureOptions ): BakedCapture {
+
+	const roles: Partial<Record<ProbeRole, BakedCaptureSettings>> = {};
+	for ( const role of PROBE_ROLES ) {
+
+		if ( options.roles?.[ role ] ) roles[ role ] = bakedSettings( { ...options, ...options.roles[ role ] } );
+
+	}
+
+	return { ...bakedSettings( options ), ...( Object.keys( roles ).length > 0 ? { roles } : {} ) };
+
+}
+
+/** The capture settings worth storing with a bake. */
+function bakedSettings( settings: ProbeCaptureSettings ): BakedCaptureSettings {
+
+	const out: BakedCaptureSettings = {
+		resolution: settings.resolution ?? 32, near: settings.near ?? 0.05, far: settings.far ?? 1000,
+		type: settings.type === FloatType ? 'float' : 'half',
+	};
+	// The format names the two normalised formulas only; 'paper-unnormalized' is left unstated.
+	const solidAngle = settings.solidAngle;
+	if ( solidAngle === undefined || solidAngle === 'exact' || solidAngle === 'paper' ) out.solidAngle = solidAngle ?? 'exact';
+	return out;
+
+}
+
+/** Flat min/max boxes (6 numbers each) as `BoxLike`s. */
+function boxes( flat: Float64Array ): BoxLike[] | undefined {
+
+	if ( flat.length === 0 ) return undefined;
+	const out: BoxLike[] = [];
+	for ( let i = 0; i < flat.length; i += 6 ) {
+
+		out.push( {
+			min: { x: flat[ i ], y: flat[ i + 1 ], z: flat[ i + 2 ] },
+			max: { x: flat[ i + 3 ], y: flat[ i + 4 ], z: flat[ i + 5 ] },
+		} );
+
+	}
+
+	return out;
+
+}
