@@ -1,7 +1,9 @@
 #!/usr/bin/env node
 // Embeds the GLSL sources of shaders/ into src/shaders.generated.ts as string exports, resolving
 // `#include <name>` against shaders/name.glsl, so the library ships plain ES modules that need no
-// bundler plugin. `--check` exits non-zero when the generated file is stale (used by the tests).
+// bundler plugin. An include with no such file (`#include <lights_fragment_begin>` in the chunks
+// patched into three's shaders) is left for three to resolve. `--check` exits non-zero when the
+// generated file is stale (used by the tests).
 import { readFileSync, readdirSync, writeFileSync, existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
@@ -13,7 +15,11 @@ function resolve( name, seen = [] ) {
 
 	if ( seen.includes( name ) ) throw new Error( `shaders: #include cycle ${[ ...seen, name ].join( ' → ' )}` );
 	const source = readFileSync( dir + name, 'utf8' );
-	return source.replace( /^#include <(\w+)>$/gm, ( _, include ) => resolve( include + '.glsl', [ ...seen, name ] ).trim() );
+	return source.replace( /^#include <(\w+)>$/gm, ( line, include ) => {
+
+		return existsSync( dir + include + '.glsl' ) ? resolve( include + '.glsl', [ ...seen, name ] ).trim() : line;
+
+	} );
 
 }
 

@@ -7,6 +7,39 @@ export const fullscreenVert = "// A PlaneGeometry( 2, 2 ) already spans clip spa
 /** shaders/probeVolume.pars.glsl */
 export const probeVolumePars = "// Irradiance from the probe volume, the paper's quadratic form E(n) = nᵀ M n with n = (x, y, z, 1)\n// (Ramamoorthi & Hanrahan 2001): one 4x4 M per colour channel, set per object from the blended SH.\nuniform mat4 probeVolumeMatrices[ 3 ];\nuniform float probeVolumeIntensity;\n\nvec3 probeVolumeIrradiance( const in vec3 worldNormal ) {\n\n\t// No guard against a NaN normal here, unlike probeVolumeIrradianceFromPacked: in this per-object\n\t// path, the one every character and prop takes, a select on the normal made the 500-sphere frame\n\t// benchmark 1.63× a global LightProbe instead of 1.10× in SwiftShader. A NaN normal (a zero\n\t// normal) gives a NaN probe term here exactly as it does with three's own LightProbe.\n\tvec4 n = vec4( worldNormal, 1.0 );\n\treturn probeVolumeIntensity * vec3(\n\t\tdot( n, probeVolumeMatrices[ 0 ] * n ),\n\t\tdot( n, probeVolumeMatrices[ 1 ] * n ),\n\t\tdot( n, probeVolumeMatrices[ 2 ] * n )\n\t);\n\n}\n";
 
+/** shaders/probeVolumeDirectScale.glsl */
+export const probeVolumeDirectScale = "reflectedLight.directDiffuse *= probeVolumeDirectScale;\nreflectedLight.directSpecular *= probeVolumeDirectScale;\n";
+
+/** shaders/probeVolumeIrradianceAttribute.vert.glsl */
+export const probeVolumeIrradianceAttributeVert = "#include <defaultnormal_vertex>\nvProbeVolumeIrradiance = probeVolumeIntensity * probeIrradiance;\n";
+
+/** shaders/probeVolumeIrradianceAttribute.vert.pars.glsl */
+export const probeVolumeIrradianceAttributeVertPars = "uniform float probeVolumeIntensity;\nattribute vec3 probeIrradiance;\nvarying vec3 vProbeVolumeIrradiance;\n";
+
+/** shaders/probeVolumeIrradianceVarying.frag.pars.glsl */
+export const probeVolumeIrradianceVaryingFragPars = "uniform float probeVolumeDirectScale;\nvarying vec3 vProbeVolumeIrradiance;\n";
+
+/** shaders/probeVolumeLights.frag.glsl */
+export const probeVolumeLightsFrag = "#include <lights_fragment_begin>\nreflectedLight.directDiffuse *= probeVolumeDirectScale;\nreflectedLight.directSpecular *= probeVolumeDirectScale;\n#if defined( RE_IndirectDiffuse )\n\tirradiance += probeVolumeIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );\n#endif\n";
+
+/** shaders/probeVolumeLightsTexture.frag.glsl */
+export const probeVolumeLightsTextureFrag = "#include <lights_fragment_begin>\nreflectedLight.directDiffuse *= probeVolumeDirectScale;\nreflectedLight.directSpecular *= probeVolumeDirectScale;\n#if defined( RE_IndirectDiffuse )\n\tirradiance += probeVolumeTextureIrradiance(\n\t\t( ( vec4( geometryPosition, 1.0 ) - viewMatrix[ 3 ] ) * viewMatrix ).xyz,\n\t\tnormalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );\n#endif\n";
+
+/** shaders/probeVolumeLightsVarying.frag.glsl */
+export const probeVolumeLightsVaryingFrag = "#include <lights_fragment_begin>\nreflectedLight.directDiffuse *= probeVolumeDirectScale;\nreflectedLight.directSpecular *= probeVolumeDirectScale;\n#if defined( RE_IndirectDiffuse )\n\tirradiance += vProbeVolumeIrradiance;\n#endif\n";
+
+/** shaders/probeVolumeLightsVertexSH.frag.glsl */
+export const probeVolumeLightsVertexSHFrag = "#include <lights_fragment_begin>\nreflectedLight.directDiffuse *= probeVolumeDirectScale;\nreflectedLight.directSpecular *= probeVolumeDirectScale;\n#if defined( RE_IndirectDiffuse )\n\tirradiance += probeVolumeVertexSHIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );\n#endif\n";
+
+/** shaders/probeVolumeNormal.vert.glsl */
+export const probeVolumeNormalVert = "#include <defaultnormal_vertex>\nvProbeVolumeIrradiance = probeVolumeIrradiance( normalize( ( vec4( transformedNormal, 0.0 ) * viewMatrix ).xyz ) );\n";
+
+/** shaders/probeVolumeSHAttributes.vert.glsl */
+export const probeVolumeSHAttributesVert = "#include <defaultnormal_vertex>\nvProbeSH0 = probeSH0; vProbeSH1 = probeSH1; vProbeSH2 = probeSH2; vProbeSH3 = probeSH3;\nvProbeSH4 = probeSH4; vProbeSH5 = probeSH5; vProbeSH6 = probeSH6;\n";
+
+/** shaders/probeVolumeSHAttributes.vert.pars.glsl */
+export const probeVolumeSHAttributesVertPars = "attribute vec4 probeSH0;\nvarying vec4 vProbeSH0;\nattribute vec4 probeSH1;\nvarying vec4 vProbeSH1;\nattribute vec4 probeSH2;\nvarying vec4 vProbeSH2;\nattribute vec4 probeSH3;\nvarying vec4 vProbeSH3;\nattribute vec4 probeSH4;\nvarying vec4 vProbeSH4;\nattribute vec4 probeSH5;\nvarying vec4 vProbeSH5;\nattribute vec4 probeSH6;\nvarying vec4 vProbeSH6;\n";
+
 /** shaders/probeVolumeSHEval.glsl */
 export const probeVolumeSHEval = "// Irradiance E(n) from SH9 packed in 7 vec4 — the 27 floats of three.js SphericalHarmonics3 in\n// order plus one unused (the packing of three's LightProbeGrid atlas) — with the same constants as\n// SphericalHarmonics3.getIrradianceAt, so it equals the object mode's nᵀMn. Not clamped at zero,\n// like the object mode: ringing shows instead of being hidden differently per mode.\nvec3 probeVolumeIrradianceFromPacked( const in vec4 s0, const in vec4 s1, const in vec4 s2, const in vec4 s3, const in vec4 s4, const in vec4 s5, const in vec4 s6, const in vec3 n ) {\n\n\tvec3 c0 = s0.xyz;\n\tvec3 c1 = vec3( s0.w, s1.xy );\n\tvec3 c2 = vec3( s1.zw, s2.x );\n\tvec3 c3 = s2.yzw;\n\tvec3 c4 = s3.xyz;\n\tvec3 c5 = vec3( s3.w, s4.xy );\n\tvec3 c6 = vec3( s4.zw, s5.x );\n\tvec3 c7 = s5.yzw;\n\tvec3 c8 = s6.xyz;\n\t// A NaN or infinite normal gets the direction-free part of E (see probeVolumeIrradiance).\n\tvec3 m = abs( dot( n, n ) - 1.0 ) < 0.5 ? n : vec3( 0.0 );\n\tfloat x = m.x, y = m.y, z = m.z;\n\tvec3 result = c0 * 0.886227;\n\tresult += c1 * ( 2.0 * 0.511664 * y );\n\tresult += c2 * ( 2.0 * 0.511664 * z );\n\tresult += c3 * ( 2.0 * 0.511664 * x );\n\tresult += c4 * ( 2.0 * 0.429043 * x * y );\n\tresult += c5 * ( 2.0 * 0.429043 * y * z );\n\tresult += c6 * ( 0.743125 * z * z - 0.247708 );\n\tresult += c7 * ( 2.0 * 0.429043 * x * z );\n\tresult += c8 * ( 0.429043 * ( x * x - y * y ) );\n\treturn result;\n\n}\n";
 

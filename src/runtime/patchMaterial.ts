@@ -1,5 +1,10 @@
 import { Vector3, type Data3DTexture, type Material, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
-import { probeVolumePars, probeVolumeTexturePars, probeVolumeVertexSHPars } from '../shaders.generated.js';
+import {
+	probeVolumeIrradianceAttributeVert, probeVolumeIrradianceAttributeVertPars, probeVolumeIrradianceVaryingFragPars,
+	probeVolumeLightsFrag, probeVolumeLightsTextureFrag, probeVolumeLightsVaryingFrag, probeVolumeLightsVertexSHFrag,
+	probeVolumeNormalVert, probeVolumePars, probeVolumeSHAttributesVert, probeVolumeSHAttributesVertPars,
+	probeVolumeTexturePars, probeVolumeVertexSHPars,
+} from '../shaders.generated.js';
 
 /** The uniforms a patched material reads; write them yourself, or let a `LightProbeVolume` do it. */
 export interface ProbeVolumeUniforms {
@@ -112,6 +117,7 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 		throw new TypeError( 'patchMaterial: source \'texture\' needs options.uniforms with probeVolumeSH, probeVolumeGridMin, probeVolumeGridMax and probeVolumeGridResolution.' );
 
 	}
+
 	const previous = { onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey };
 	// three's default key is onBeforeCompile.toString(): evaluate it with the user's hook in place,
 	// or every patched material would share the wrapper's text and one program.
@@ -180,117 +186,72 @@ export function unpatchMaterial( material: Material ): void {
 }
 
 // Indirect diffuse irradiance is accumulated in `irradiance` by lights_fragment_begin; the probe
-// term joins it there, before lights_fragment_end hands it to RE_IndirectDiffuse — the same place
-// and space (world normal, no π) as three's LightProbe term.
-const FRAGMENT_PIXEL = /* glsl */`
-#include <lights_fragment_begin>
-reflectedLight.directDiffuse *= probeVolumeDirectScale;
-reflectedLight.directSpecular *= probeVolumeDirectScale;
-#if defined( RE_IndirectDiffuse )
-	irradiance += probeVolumeIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
-#endif
-`;
+// term joins it there (shaders/probeVolumeLights*.frag.glsl), before lights_fragment_end hands it
+// to RE_IndirectDiffuse — the same place and space (world normal, no π) as three's LightProbe
+// term. The texture variant takes the world position from the view-space one, as three's own
+// light-probe-grid path does: no extra varying.
 
-const FRAGMENT_VERTEX = /* glsl */`
-#include <lights_fragment_begin>
-reflectedLight.directDiffuse *= probeVolumeDirectScale;
-reflectedLight.directSpecular *= probeVolumeDirectScale;
-#if defined( RE_IndirectDiffuse )
-	irradiance += vProbeVolumeIrradiance;
-#endif
-`;
+const MAIN = 'void main() {';
+const LIGHTS = '#include <lights_fragment_begin>';
+const NORMAL = '#include <defaultnormal_vertex>';
+const DIRECT_SCALE = 'uniform float probeVolumeDirectScale;\n';
 
-const VERTEX_VERTEX = /* glsl */`
-#include <defaultnormal_vertex>
-vProbeVolumeIrradiance = probeVolumeIrradiance( normalize( ( vec4( transformedNormal, 0.0 ) * viewMatrix ).xyz ) );
-`;
+/**
+ * What a variant adds to each stage: declarations before `void main() {`, and a chunk (from
+ * shaders/, starting with three's include it replaces; put on lines of its own) in place of
+ * lights_fragment_begin and, when the vertex stage takes part, defaultnormal_vertex.
+ */
+interface ProbeVolumeInjection {
 
-const VERTEX_IRRADIANCE_ATTRIBUTE = /* glsl */`
-#include <defaultnormal_vertex>
-vProbeVolumeIrradiance = probeVolumeIntensity * probeIrradiance;
-`;
+	vertexPars?: string;
+	vertex?: string;
+	fragmentPars: string;
+	fragment: string;
 
-const VERTEX_SH_ATTRIBUTES = /* glsl */`
-#include <defaultnormal_vertex>
-vProbeSH0 = probeSH0; vProbeSH1 = probeSH1; vProbeSH2 = probeSH2; vProbeSH3 = probeSH3;
-vProbeSH4 = probeSH4; vProbeSH5 = probeSH5; vProbeSH6 = probeSH6;
-`;
+}
 
-const FRAGMENT_VERTEX_SH = /* glsl */`
-#include <lights_fragment_begin>
-reflectedLight.directDiffuse *= probeVolumeDirectScale;
-reflectedLight.directSpecular *= probeVolumeDirectScale;
-#if defined( RE_IndirectDiffuse )
-	irradiance += probeVolumeVertexSHIrradiance( normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
-#endif
-`;
-
-// The world position from the view-space one, as three's own light-probe-grid path does: no
-// extra varying.
-const FRAGMENT_TEXTURE = /* glsl */`
-#include <lights_fragment_begin>
-reflectedLight.directDiffuse *= probeVolumeDirectScale;
-reflectedLight.directSpecular *= probeVolumeDirectScale;
-#if defined( RE_IndirectDiffuse )
-	irradiance += probeVolumeTextureIrradiance(
-		( ( vec4( geometryPosition, 1.0 ) - viewMatrix[ 3 ] ) * viewMatrix ).xyz,
-		normalize( ( vec4( geometryNormal, 0.0 ) * viewMatrix ).xyz ) );
-#endif
-`;
-
-const SH_ATTRIBUTE_DECLARATIONS = [ 0, 1, 2, 3, 4, 5, 6 ].map( ( i ) => `attribute vec4 probeSH${i};\nvarying vec4 vProbeSH${i};` ).join( '\n' );
+const INJECTIONS: Record<string, ProbeVolumeInjection> = {
+	pixel: { fragmentPars: `${probeVolumePars}\n${DIRECT_SCALE}`, fragment: probeVolumeLightsFrag },
+	vertex: {
+		vertexPars: `${probeVolumePars}\nvarying vec3 vProbeVolumeIrradiance;\n`, vertex: probeVolumeNormalVert,
+		fragmentPars: probeVolumeIrradianceVaryingFragPars, fragment: probeVolumeLightsVaryingFrag,
+	},
+	vertexIrradiance: {
+		vertexPars: probeVolumeIrradianceAttributeVertPars, vertex: probeVolumeIrradianceAttributeVert,
+		fragmentPars: probeVolumeIrradianceVaryingFragPars, fragment: probeVolumeLightsVaryingFrag,
+	},
+	vertexSH: {
+		vertexPars: probeVolumeSHAttributesVertPars, vertex: probeVolumeSHAttributesVert,
+		fragmentPars: `${probeVolumeVertexSHPars}\n${DIRECT_SCALE}`, fragment: probeVolumeLightsVertexSHFrag,
+	},
+	texture: { fragmentPars: `${probeVolumeTexturePars}\n${DIRECT_SCALE}`, fragment: probeVolumeLightsTextureFrag },
+};
 
 function injectProbeVolume( shader: WebGLProgramParametersWithUniforms, variant: string ): void {
 
 	const requireChunk = ( source: string, chunk: string, stage: string ) => {
 
-		if ( ! source.includes( chunk ) ) throw new Error( `patchMaterial: the ${stage} shader has no ${chunk}; this three.js version or material is not supported.` );
+		if ( ! source.includes( chunk ) ) {
+
+			throw new Error( `patchMaterial: the ${stage} shader has no ${chunk}; this three.js version or material is not supported.` );
+
+		}
 
 	};
 
-	requireChunk( shader.fragmentShader, '#include <lights_fragment_begin>', 'fragment' );
-	if ( variant !== 'pixel' && variant !== 'texture' ) requireChunk( shader.vertexShader, '#include <defaultnormal_vertex>', 'vertex' );
-	const vertexVarying = 'uniform float probeVolumeDirectScale;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {';
-	switch ( variant ) {
+	const injection = INJECTIONS[ variant ];
+	requireChunk( shader.fragmentShader, LIGHTS, 'fragment' );
+	if ( injection.vertex !== undefined ) {
 
-		case 'vertex':
-			shader.vertexShader = shader.vertexShader
-				.replace( 'void main() {', `${probeVolumePars}\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {` )
-				.replace( '#include <defaultnormal_vertex>', VERTEX_VERTEX );
-			shader.fragmentShader = shader.fragmentShader
-				.replace( 'void main() {', vertexVarying )
-				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
-			break;
-
-		case 'vertexIrradiance':
-			shader.vertexShader = shader.vertexShader
-				.replace( 'void main() {', 'uniform float probeVolumeIntensity;\nattribute vec3 probeIrradiance;\nvarying vec3 vProbeVolumeIrradiance;\nvoid main() {' )
-				.replace( '#include <defaultnormal_vertex>', VERTEX_IRRADIANCE_ATTRIBUTE );
-			shader.fragmentShader = shader.fragmentShader
-				.replace( 'void main() {', vertexVarying )
-				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX );
-			break;
-
-		case 'vertexSH':
-			shader.vertexShader = shader.vertexShader
-				.replace( 'void main() {', `${SH_ATTRIBUTE_DECLARATIONS}\nvoid main() {` )
-				.replace( '#include <defaultnormal_vertex>', VERTEX_SH_ATTRIBUTES );
-			shader.fragmentShader = shader.fragmentShader
-				.replace( 'void main() {', `${probeVolumeVertexSHPars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
-				.replace( '#include <lights_fragment_begin>', FRAGMENT_VERTEX_SH );
-			break;
-
-		case 'texture':
-			shader.fragmentShader = shader.fragmentShader
-				.replace( 'void main() {', `${probeVolumeTexturePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
-				.replace( '#include <lights_fragment_begin>', FRAGMENT_TEXTURE );
-			break;
-
-		default:
-			shader.fragmentShader = shader.fragmentShader
-				.replace( 'void main() {', `${probeVolumePars}\nuniform float probeVolumeDirectScale;\nvoid main() {` )
-				.replace( '#include <lights_fragment_begin>', FRAGMENT_PIXEL );
+		requireChunk( shader.vertexShader, NORMAL, 'vertex' );
+		shader.vertexShader = shader.vertexShader
+			.replace( MAIN, `${injection.vertexPars}${MAIN}` )
+			.replace( NORMAL, `\n${injection.vertex}` );
 
 	}
+
+	shader.fragmentShader = shader.fragmentShader
+		.replace( MAIN, `${injection.fragmentPars}${MAIN}` )
+		.replace( LIGHTS, `\n${injection.fragment}` );
 
 }

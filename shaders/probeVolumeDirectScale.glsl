@@ -1,0 +1,2 @@
+reflectedLight.directDiffuse *= probeVolumeDirectScale;
+reflectedLight.directSpecular *= probeVolumeDirectScale;

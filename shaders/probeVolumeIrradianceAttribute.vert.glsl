@@ -1,0 +1,2 @@
+#include <defaultnormal_vertex>
+vProbeVolumeIrradiance = probeVolumeIntensity * probeIrradiance;

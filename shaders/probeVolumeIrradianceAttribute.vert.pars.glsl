@@ -1,0 +1,3 @@
+uniform float probeVolumeIntensity;
+attribute vec3 probeIrradiance;
+varying vec3 vProbeVolumeIrradiance;

@@ -1,0 +1,2 @@
+uniform float probeVolumeDirectScale;
+varying vec3 vProbeVolumeIrradiance;

@@ -1,0 +1,5 @@
+#include <lights_fragment_begin>
+#include <probeVolumeDirectScale>
+#if defined( RE_IndirectDiffuse )
+	irradiance += vProbeVolumeIrradiance;
+#endif

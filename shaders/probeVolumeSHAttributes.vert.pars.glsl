@@ -1,0 +1,14 @@
+attribute vec4 probeSH0;
+varying vec4 vProbeSH0;
+attribute vec4 probeSH1;
+varying vec4 vProbeSH1;
+attribute vec4 probeSH2;
+varying vec4 vProbeSH2;
+attribute vec4 probeSH3;
+varying vec4 vProbeSH3;
+attribute vec4 probeSH4;
+varying vec4 vProbeSH4;
+attribute vec4 probeSH5;
+varying vec4 vProbeSH5;
+attribute vec4 probeSH6;
+varying vec4 vProbeSH6;
