@@ -21,7 +21,7 @@ const SYNTHETIC = 100_000;
 
 export const notes = [
 	'Sponza: the 85 probe positions, names and roles of scenes/sponza.json, tetrahedralized here; its SH are synthetic (seeded random in [0, 1)), which is fine for sizes and load times (a real bake has the same layout and byte count; float16 rounding does not change the size). Synthetic: 100,000 probes uniformly random in a 100 m cube (seed 5), random SH, no names, role fill.',
-	'Encode: encodeBakedVolume (validates, then writes) and for JSON bakedVolumeToJSON + JSON.stringify. Load: readFileSync of the file written to bench/build/ + decodeBakedVolume (full validation, incl. exact orientation of every tetrahedron and symmetric neighbours); JSON: readFileSync + JSON.parse + bakedVolumeFromJSON. "load + mesh": load + TetrahedralMesh.fromTetrahedralization (the interpolator, ready to use), against "new TetrahedralMesh( positions )", which tetrahedralizes again — the ratio is what stored tetrahedra save.',
+	'Encode: encodeBakedVolume (validates, then writes) and for JSON bakedVolumeToJSON + JSON.stringify. Load: readFileSync of the file written to bench/build/ + decodeBakedVolume (full validation, incl. exact orientation of every tetrahedron and symmetric neighbours); JSON: readFileSync + JSON.parse + bakedVolumeFromJSON. "load + mesh": load + TetrahedralMesh.fromTetrahedralization( …, { trusted: true } ) as LightProbeVolume.fromArrayBuffer does (the interpolator, ready to use; the decoder already validated the tetrahedra), against "new TetrahedralMesh( positions )", which tetrahedralizes again — the ratio is what stored tetrahedra save.',
 	'Peer rows: tetrahedralize( positions ) alone and new TetrahedralMesh( positions ) (tetrahedralize + inverse matrices + hull), what a file without tetrahedra costs to load on top of its decoding. Sizes: file bytes (min = max); ratio of float16 and JSON against the float32 binary, of the float32 binary against the peer size: the same float32 file without tetrahedra and neighbours.',
 	'Times: median / min / max of several runs after warm-up calls, GC before each (bench/stats.ts timeRuns).',
 ];
@@ -38,7 +38,7 @@ interface Io {
 interface Mesh { tetrahedra: Uint32Array, neighbors: Int32Array }
 interface MeshClass {
 	new ( positions: ArrayLike<number> ): Mesh;
-	fromTetrahedralization?( positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number> ): Mesh;
+	fromTetrahedralization?( positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, options?: { trusted?: boolean } ): Mesh;
 }
 
 /** Loads src/io; null with the reason when it is absent or lacks a function this bench calls. */
@@ -162,7 +162,8 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 				timed( loadMesh, () => {
 
 					const d = io.decodeBakedVolume( readFileSync( path ) );
-					return fromStored( d.positions, d.tetrahedra, d.neighbors );
+					// The runtime's path: the decoder validated the tetrahedra, so the mesh trusts them (issue 11).
+					return fromStored( d.positions, d.tetrahedra, d.neighbors, { trusted: true } );
 
 				}, 10_000 );
 				if ( loadMesh.median !== null && peerMesh.median !== null ) Object.assign( loadMesh, { peer: 'new TetrahedralMesh( positions )', ratio: loadMesh.median / peerMesh.median } );

@@ -19,7 +19,7 @@ export const notes = [
 	'from scratch: tetrahedralize() of the same layout, the alternative to an incremental update, each call timed alone after 20 warm-up calls (400 calls for Sponza, 21 for 5,000 probes). Ratio: move ÷ from scratch. Output: cells (tetrahedra and hull ghost cells) deleted + created per move, mean and max — the work a consumer (TetrahedralMesh inverse matrices) must redo, via lastEdit.changedCells.',
 	'Check: after all moves the mesh equals tetrahedralize() of the final positions as a set of tetrahedra (same perturbation, so the Delaunay tetrahedralization is unique). The consumer-side update (inverse matrices of changed cells) is not included in the times.',
 	'Target (printed, not asserted): a small move ≤ 1/20 of from scratch on 5,000 probes.',
-	'Full update: TetrahedralMesh.moveProbe on a mesh from TetrahedralMesh.fromDynamic (the dynamic move, inverse matrices of lastEdit.changedCells, hull-face slots, and the outer cells rebuilt over the whole hull when a hull face changed), and LightProbeVolume.moveProbe (the same plus the volume\'s bookkeeping; no capture), timed per move like the above; peers: new TetrahedralMesh( positions ) and new LightProbeVolume( { positions } ) from scratch. Output: share of moves that changed the hull (and so rebuilt the outer cells) and the median of those moves. Check: after the moves, interpolate() at 2,000 points in and around the hull equals a TetrahedralMesh from scratch to 1e-9.',
+	'Full update: TetrahedralMesh.moveProbe on an IncrementalTetrahedralMesh (the dynamic move, inverse matrices of lastEdit.changedCells, hull-face slots, and the outer cells rebuilt over the whole hull when a hull face changed), and LightProbeVolume.moveProbe (the same plus the volume\'s bookkeeping; no capture), timed per move like the above; peers: new TetrahedralMesh( positions ) and new LightProbeVolume( { positions } ) from scratch. Output: share of moves that changed the hull (and so rebuilt the outer cells) and the median of those moves. Check: after the moves, interpolate() at 2,000 points in and around the hull equals a TetrahedralMesh from scratch to 1e-9.',
 ];
 
 const MOVES = 2000; // timed moves per row (half out, half back)
@@ -127,6 +127,7 @@ async function fullUpdateRows( name: string, points: Float64Array, log: ( messag
 			...await import( '../src/interpolation/TetrahedralMesh.js' ),
 			...await import( '../src/runtime/LightProbeVolume.js' ),
 			...await import( '../src/tetrahedra/DynamicTetrahedralization.js' ),
+			...await import( '../src/interpolation/IncrementalTetrahedralMesh.js' ),
 		};
 
 	} catch ( error ) {
@@ -136,7 +137,7 @@ async function fullUpdateRows( name: string, points: Float64Array, log: ( messag
 
 	}
 
-	const { TetrahedralMesh, LightProbeVolume, DynamicTetrahedralization } = modules;
+	const { TetrahedralMesh, LightProbeVolume, DynamicTetrahedralization, IncrementalTetrahedralMesh } = modules;
 	const runs = count > 1000 ? 21 : 400;
 	log( `${name}: TetrahedralMesh / LightProbeVolume from scratch …` );
 	const meshScratch = timeBuild( () => new TetrahedralMesh( points ), runs );
@@ -151,7 +152,7 @@ async function fullUpdateRows( name: string, points: Float64Array, log: ( messag
 			const row: BenchRow = { case: name, subject: `ours, ${subject} (${mode})`, unit: 'µs', median: null, min: null, max: null, runs: 0 };
 			try {
 
-				const mesh = TetrahedralMesh.fromDynamic( new DynamicTetrahedralization( points ) ) as unknown as Mesh;
+				const mesh = new IncrementalTetrahedralMesh( new DynamicTetrahedralization( points ) ) as unknown as Mesh;
 				let move: ( i: number, x: number, y: number, z: number ) => void;
 				let current: () => Mesh;
 				if ( subject === 'TetrahedralMesh.moveProbe' ) {

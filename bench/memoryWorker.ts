@@ -91,7 +91,7 @@ if ( mode === 'volume' || mode === 'mesh' ) {
 	// A volume loaded from a baked file: decode (tetrahedra and neighbours stay views of the
 	// file's buffer), the stored tetrahedralization as the interpolator, no tetrahedralizing.
 	const data = io!.decodeBakedVolume( encoded! );
-	const mesh = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors );
+	const mesh = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { trusted: true } );
 	const volume = new LightProbeVolume( { positions: data.positions, sh: data.sh, interpolator: mesh } );
 	kept = volume;
 	Object.assign( arrays, {
