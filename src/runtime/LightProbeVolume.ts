@@ -328,8 +328,9 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * A volume from decoded baked data: the stored tetrahedralization is used as it is (checked in
-	 * O(n)); without one, the default interpolator is built.
+	 * A volume from decoded baked data (as `decodeBakedVolume` or `bakedVolumeFromJSON` return it,
+	 * having checked it): the stored tetrahedralization is used as it is, without checking it again;
+	 * without one, the default interpolator is built.
 	 * @param parameters More constructor parameters, e.g. `occluders`.
 	 */
 	static fromBakedData( data: BakedVolumeData, parameters: BakedVolumeParameters = {} ): LightProbeVolume {

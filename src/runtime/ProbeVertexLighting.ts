@@ -33,6 +33,15 @@ const _weights = new Float64Array( MAX_WEIGHTS );
 const _sh = new Float64Array( 27 );
 const _normalMatrix = new Matrix3();
 
+/** A plain float attribute's array, read directly; null for interleaved or normalized ones (read with getX()). */
+function directArray( attribute: BufferAttribute | undefined ): ArrayLike<number> | null {
+
+	if ( attribute === undefined ) return null;
+	const interleaved = ( attribute as { isInterleavedBufferAttribute?: boolean } ).isInterleavedBufferAttribute === true;
+	return ! interleaved && attribute.normalized !== true ? attribute.array : null;
+
+}
+
 /** Attribute names this class writes. */
 const IRRADIANCE = 'probeIrradiance';
 const SH_NAMES = [ 0, 1, 2, 3, 4, 5, 6 ].map( ( i ) => `probeSH${i}` );
@@ -217,27 +226,30 @@ export class ProbeVertexLighting {
 		this.mesh.updateWorldMatrix( true, false );
 		const e = this.mesh.matrixWorld.elements;
 		const interpolator = this.field.interpolator, probeSH = this.field.sh, weightCount = interpolator.weightCount;
-		const out = this.data, count = position.count;
+		const out = this.data, count = position.count, irradiance = this.output === 'irradiance';
 		// Direct reads when the attribute is a plain float array; getX() otherwise (interleaved, normalized).
-		const direct = ( attribute: BufferAttribute | undefined ) => attribute !== undefined && ( attribute as { isInterleavedBufferAttribute?: boolean } ).isInterleavedBufferAttribute !== true && attribute.normalized !== true ? attribute.array : null;
-		const positions = direct( position ), ps = position.itemSize;
+		const positions = directArray( position ), ps = position.itemSize;
+		const normals = directArray( normal ), ns = normal?.itemSize ?? 0;
+		const n = irradiance ? _normalMatrix.getNormalMatrix( this.mesh.matrixWorld ).elements : null;
 		let hint = - 1;
+		for ( let i = 0; i < count; i ++ ) {
 
-		if ( this.output === 'irradiance' ) {
+			const px = positions ? positions[ ps * i ] : position.getX( i );
+			const py = positions ? positions[ ps * i + 1 ] : position.getY( i );
+			const pz = positions ? positions[ ps * i + 2 ] : position.getZ( i );
+			// Consecutive vertices are close: the previous vertex's cell is the walk's start.
+			hint = interpolator.interpolate(
+				e[ 0 ] * px + e[ 4 ] * py + e[ 8 ] * pz + e[ 12 ],
+				e[ 1 ] * px + e[ 5 ] * py + e[ 9 ] * pz + e[ 13 ],
+				e[ 2 ] * px + e[ 6 ] * py + e[ 10 ] * pz + e[ 14 ],
+				_indices, _weights, hint );
+			blendSH( _indices, _weights, probeSH, _sh, weightCount );
+			if ( n !== null ) {
 
-			const normals = direct( normal ), ns = normal!.itemSize;
-			const n = _normalMatrix.getNormalMatrix( this.mesh.matrixWorld ).elements;
-			for ( let i = 0; i < count; i ++ ) {
-
-				const px = positions ? positions[ ps * i ] : position.getX( i ), py = positions ? positions[ ps * i + 1 ] : position.getY( i ), pz = positions ? positions[ ps * i + 2 ] : position.getZ( i );
-				// Consecutive vertices are close: the previous vertex's cell is the walk's start.
-				hint = interpolator.interpolate(
-					e[ 0 ] * px + e[ 4 ] * py + e[ 8 ] * pz + e[ 12 ],
-					e[ 1 ] * px + e[ 5 ] * py + e[ 9 ] * pz + e[ 13 ],
-					e[ 2 ] * px + e[ 6 ] * py + e[ 10 ] * pz + e[ 14 ],
-					_indices, _weights, hint );
-				blendSH( _indices, _weights, probeSH, _sh, weightCount );
-				const nx0 = normals ? normals[ ns * i ] : normal!.getX( i ), ny0 = normals ? normals[ ns * i + 1 ] : normal!.getY( i ), nz0 = normals ? normals[ ns * i + 2 ] : normal!.getZ( i );
+				// E(n) for the vertex's world normal.
+				const nx0 = normals ? normals[ ns * i ] : normal!.getX( i );
+				const ny0 = normals ? normals[ ns * i + 1 ] : normal!.getY( i );
+				const nz0 = normals ? normals[ ns * i + 2 ] : normal!.getZ( i );
 				let x = n[ 0 ] * nx0 + n[ 3 ] * ny0 + n[ 6 ] * nz0;
 				let y = n[ 1 ] * nx0 + n[ 4 ] * ny0 + n[ 7 ] * nz0;
 				let z = n[ 2 ] * nx0 + n[ 5 ] * ny0 + n[ 8 ] * nz0;
@@ -245,19 +257,9 @@ export class ProbeVertexLighting {
 				if ( length > 0 ) { x /= length; y /= length; z /= length; }
 				irradianceAt( _sh, 0, x, y, z, out, 3 * i );
 
-			}
+			} else {
 
-		} else {
-
-			for ( let i = 0; i < count; i ++ ) {
-
-				const px = positions ? positions[ ps * i ] : position.getX( i ), py = positions ? positions[ ps * i + 1 ] : position.getY( i ), pz = positions ? positions[ ps * i + 2 ] : position.getZ( i );
-				hint = interpolator.interpolate(
-					e[ 0 ] * px + e[ 4 ] * py + e[ 8 ] * pz + e[ 12 ],
-					e[ 1 ] * px + e[ 5 ] * py + e[ 9 ] * pz + e[ 13 ],
-					e[ 2 ] * px + e[ 6 ] * py + e[ 10 ] * pz + e[ 14 ],
-					_indices, _weights, hint );
-				blendSH( _indices, _weights, probeSH, _sh, weightCount );
+				// The SH itself, 28 floats a vertex (7 vec4, the last float unused).
 				const base = 28 * i;
 				for ( let k = 0; k < 27; k ++ ) out[ base + k ] = _sh[ k ];
 

@@ -77,12 +77,12 @@ export function toBakedVolumeInput( volume: BakedSource ): BakedVolumeInput {
 
 /**
  * The constructor parameters of decoded baked data: the stored tetrahedralization as the
- * interpolator (checked in O(n)), or none (the default interpolator is built).
+ * interpolator (not checked again: the decoder did), or none (the default interpolator is built).
  */
 export function parametersFromBakedData( data: BakedVolumeData ): BakedParameters {
 
 	const interpolator = data.tetrahedra.length > 0
-		? TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors )
+		? TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { trusted: true } )
 		: undefined;
 	const zones = data.zones.length > 0
 		? data.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: boxes( zone.bounds ) } ) )
