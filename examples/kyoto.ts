@@ -7,7 +7,7 @@ import GUI from 'lil-gui';
 import { LightProbeVolume, PlanarMesh, evaluateIrradiance, makeIrradianceNonNegative, projectEquirectToSHGPU, windowSH } from 'three-capture-lighting';
 import { loadCharacter } from './common/character.js';
 import { Overlay } from './common/Overlay.js';
-import type { DemoReport } from './common/DemoApp.js';
+import type { DemoReport } from './common/report.js';
 import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, type KyotoPanorama } from '@scenes/kyoto.js';
 
 // The paper's Kyoto experiment (section 3): light probes captured from street-level panoramas

@@ -1,6 +1,10 @@
 import * as THREE from 'three';
-import { DemoApp } from './common/DemoApp.js';
+import { LightProbeVolume, captureBounces, createProbeInterpolator, type AddOptions } from 'three-capture-lighting';
 import { buildSponza, sponzaLayouts, sponzaPath, SPONZA_CHARACTER_HEIGHT } from '@scenes/sponza.js';
+import { DynamicObjects } from './common/DynamicObjects.js';
+import { zonesOf } from './common/layouts.js';
+import { ProbeVolumeDemo } from './common/ProbeVolumeDemo.js';
+import { Viewer } from './common/Viewer.js';
 
 // The paper's Sponza (Table 4: 432 grid probes vs 85 placed with meaning): an open-sky atrium.
 // The sun lights half of the courtyard; the fox walks from the sun patch into the shade and under
@@ -12,36 +16,85 @@ import { buildSponza, sponzaLayouts, sponzaPath, SPONZA_CHARACTER_HEIGHT } from 
 // as built: a flat emissive stand-in for indirect light, which the probe modes replace.
 // ?floor=ambient|object|vertex|texture selects one.
 
-const app = new DemoApp( {
-	layouts: sponzaLayouts,
-	camera: { position: [ 4.3, 3.4, 1.0 ], target: [ - 4, 0.7, - 0.6 ] },
-	path: sponzaPath,
-	characterHeight: SPONZA_CHARACTER_HEIGHT,
-	capture: { near: 0.05, far: 400 },
-	build: buildSponza,
-} );
-
 const FLOOR_MODES = [ 'ambient', 'object', 'vertex', 'texture' ] as const;
+type FloorMode = typeof FLOOR_MODES[ number ];
 
-app.start().then( () => {
+const viewer = new Viewer( { camera: { position: [ 4.3, 3.4, 1.0 ], target: [ - 4, 0.7, - 0.6 ] } } );
+const { renderer, scene, settings } = viewer;
+
+init().catch( ( error ) => viewer.showError( error ) );
+
+async function init(): Promise<void> {
+
+	// The static scene the probes capture: the atrium, the sun and the sky over the open roof.
+	await buildSponza( viewer );
+
+	// What the probes light: the fox walking from the sun into the arcades, and (in a probe mode of
+	// "floor lighting") the floors.
+	const objects = await DynamicObjects.load( viewer, { path: sponzaPath, height: SPONZA_CHARACTER_HEIGHT } );
+	const floor = scene.getObjectByName( 'floors' ) as THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial> | undefined;
+	let floorLighting: AddOptions | null = null;
+
+	const demo = new ProbeVolumeDemo( viewer, objects, {
+		layouts: sponzaLayouts,
+		// The probes of a layout, tetrahedralized (the 432-probe grid also trilinearly).
+		createVolume: ( layout, sh ) => new LightProbeVolume( {
+			positions: layout.positions, names: layout.names, roles: layout.roles, sh,
+			interpolator: createProbeInterpolator( layout.positions, { outside: settings.outside } ),
+			zones: settings.zones ? zonesOf( layout ) : undefined,
+		} ),
+		addObjects: ( volume ) => {
+
+			for ( const object of objects.list ) volume.add( object );
+			if ( floor && floorLighting ) volume.add( floor, floorLighting );
+
+		},
+		// A cube map at each probe, projected to SH9 on the GPU (far: the sky dome); bounces capture
+		// again with the atrium lit by the probes.
+		capture: async ( volume, { bounces, ...options } ) => {
+
+			const captureOptions = { ...options, near: 0.05, far: 400 };
+			if ( bounces > 0 ) await captureBounces( volume, renderer, scene, { ...captureOptions, bounces } );
+			else await volume.capture( renderer, scene, captureOptions );
+
+		},
+	} );
+	await demo.start();
 
 	// The fox walks in and out of the sun: let it receive the sun's shadow.
-	app.scene.traverse( ( object ) => { object.receiveShadow = true; } );
+	scene.traverse( ( object ) => { object.receiveShadow = true; } );
 
-	const floor = app.scene.getObjectByName( 'floors' ) as THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial> | undefined;
-	if ( ! floor ) return;
-	const ambient = floor.material.emissive.clone();
-	const params = { floor: ( FLOOR_MODES as readonly string[] ).includes( app.query.get( 'floor' ) ?? '' ) ? app.query.get( 'floor' )! : 'ambient' };
-	const apply = () => {
+	if ( floor ) {
 
-		const mode = params.floor as typeof FLOOR_MODES[ number ];
-		floor.material.emissive.copy( mode === 'ambient' ? ambient : new THREE.Color( 0 ) );
-		// 'sh' per vertex: the floor has a bump map, which per-vertex irradiance would ignore.
-		app.setScenery( floor, mode === 'ambient' ? null : { mode, vertexOutput: 'sh', texelSize: 0.5, hideInCaptures: false } );
+		// "floor lighting": the floors as built, or lit by the probes as one object, per vertex or per
+		// pixel. Seen in the captures as built (probe light off), so the probes do not see themselves.
+		const ambient = floor.material.emissive.clone();
+		const floorMode = viewer.query.params.get( 'floor' ) ?? '';
+		const params = { floor: ( FLOOR_MODES as readonly string[] ).includes( floorMode ) ? floorMode as FloorMode : 'ambient' };
+		const applyFloorMode = () => {
 
-	};
+			const mode = params.floor;
+			floor.material.emissive.copy( mode === 'ambient' ? ambient : new THREE.Color( 0 ) );
+			// 'sh' per vertex: the floor has a bump map, which per-vertex irradiance would ignore.
+			floorLighting = mode === 'ambient' ? null : { mode, vertexOutput: 'sh', texelSize: 0.5, hideInCaptures: false };
+			const volume = demo.activeVolume;
+			volume.remove( floor );
+			if ( floorLighting ) volume.add( floor, floorLighting );
 
-	apply();
-	app.gui?.add( params, 'floor', FLOOR_MODES ).name( 'floor lighting' ).onChange( apply );
+		};
 
-} );
+		applyFloorMode();
+		demo.gui?.add( params, 'floor', FLOOR_MODES ).name( 'floor lighting' ).onChange( applyFloorMode );
+
+	}
+
+	const lit = floor ? [ ...objects.list, floor ] : objects.list;
+	viewer.animate( ( time, delta ) => {
+
+		objects.move( time, delta );
+		demo.activeVolume.update();
+		demo.showView( lit );
+
+	} );
+
+}

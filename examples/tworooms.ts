@@ -1,6 +1,10 @@
 import * as THREE from 'three';
-import { DemoApp } from './common/DemoApp.js';
+import { LightProbeVolume, captureBounces, createProbeInterpolator } from 'three-capture-lighting';
 import { createTwoRooms } from '@scenes/twoRooms.js';
+import { DynamicObjects } from './common/DynamicObjects.js';
+import { zonesOf } from './common/layouts.js';
+import { ProbeVolumeDemo } from './common/ProbeVolumeDemo.js';
+import { Viewer } from './common/Viewer.js';
 
 // Light through walls: a red room and a blue room share a wall, and one grid of 16 probes spans
 // both, so tetrahedra straddle the wall. The fox walks a loop in the blue room that passes 0.3 m
@@ -8,20 +12,55 @@ import { createTwoRooms } from '@scenes/twoRooms.js';
 // "lighting zones" gives each room its own tetrahedralization (objects take the zone whose box
 // holds them); "no light through walls" drops the probes an object cannot see. Either one stops it.
 
-const rooms = createTwoRooms();
-const box = ( b: THREE.Box3 ) => ( { min: b.min.toArray(), max: b.max.toArray() } );
+const viewer = new Viewer( { camera: { position: [ 0.5, 2.4, 6.2 ], target: [ 0.3, 1, 0 ] } } );
+const { renderer, scene, settings } = viewer;
 
-const app = new DemoApp( {
-	layouts: [ {
-		name: '16 probes over both rooms', positions: rooms.positions,
-		zones: rooms.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: box( zone.bounds ) } ) ),
-	} ],
-	camera: { position: [ 0.5, 2.4, 6.2 ], target: [ 0.3, 1, 0 ] },
-	path: new THREE.CatmullRomCurve3( [ [ 0.4, 0, 0 ], [ 1.5, 0, - 1.2 ], [ 3, 0, 0 ], [ 1.5, 0, 1.2 ] ].map( ( p ) => new THREE.Vector3( ...p ) ), true ),
-	characterHeight: 0.6,
-	loopSeconds: 16,
-	capture: { near: 0.05, far: 20 },
-	build: async ( app ) => { app.scene.add( ...rooms.scene.children.slice() ); },
-} );
+init().catch( ( error ) => viewer.showError( error ) );
 
-app.start();
+async function init(): Promise<void> {
+
+	// The static scene the probes capture: the two rooms, their ceiling panels and spots.
+	const rooms = createTwoRooms();
+	scene.add( ...rooms.scene.children.slice() );
+
+	// What the probes light: the fox walking a loop in the blue room, close to the wall.
+	const loop = [ [ 0.4, 0, 0 ], [ 1.5, 0, - 1.2 ], [ 3, 0, 0 ], [ 1.5, 0, 1.2 ] ];
+	const path = new THREE.CatmullRomCurve3( loop.map( ( p ) => new THREE.Vector3( ...p ) ), true );
+	const objects = await DynamicObjects.load( viewer, { path, height: 0.6, loopSeconds: 16 } );
+
+	// One layout over both rooms, with a zone per room ("lighting zones" in the panel, ?zones=1).
+	const box = ( b: THREE.Box3 ) => ( { min: b.min.toArray(), max: b.max.toArray() } );
+	const zones = rooms.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: box( zone.bounds ) } ) );
+
+	const demo = new ProbeVolumeDemo( viewer, objects, {
+		layouts: [ { name: '16 probes over both rooms', positions: rooms.positions, zones } ],
+		createVolume: ( layout, sh ) => new LightProbeVolume( {
+			positions: layout.positions, names: layout.names, roles: layout.roles, sh,
+			interpolator: createProbeInterpolator( layout.positions, { outside: settings.outside } ),
+			// Each zone its own tetrahedralization: no cell spans the wall.
+			zones: settings.zones ? zonesOf( layout ) : undefined,
+		} ),
+		addObjects: ( volume ) => {
+
+			for ( const object of objects.list ) volume.add( object );
+
+		},
+		capture: async ( volume, { bounces, ...options } ) => {
+
+			const captureOptions = { ...options, near: 0.05, far: 20 };
+			if ( bounces > 0 ) await captureBounces( volume, renderer, scene, { ...captureOptions, bounces } );
+			else await volume.capture( renderer, scene, captureOptions );
+
+		},
+	} );
+	await demo.start();
+
+	viewer.animate( ( time, delta ) => {
+
+		objects.move( time, delta );
+		demo.activeVolume.update(); // with the guard on, also drops the probes behind the wall
+		demo.showView( objects.list );
+
+	} );
+
+}

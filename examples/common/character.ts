@@ -24,7 +24,7 @@ export async function loadCharacter( url: string, height: number ): Promise<Char
 		const fox = gltf.scene;
 		const box = new THREE.Box3().setFromObject( fox );
 		fox.scale.setScalar( height / ( box.max.y - box.min.y ) );
-		// The model faces +z; DemoApp turns the root with lookAt, which aims +z along the path.
+		// The model faces +z; DynamicObjects turns the root with lookAt, which aims +z along the path.
 		const root = new THREE.Group();
 		root.add( fox );
 		fox.traverse( ( child ) => {

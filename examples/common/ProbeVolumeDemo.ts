@@ -1,0 +1,273 @@
+import * as THREE from 'three';
+import type GUI from 'lil-gui';
+import { GridInterpolator, LightProbeVolume, VisibilityGuard, type CaptureBouncesOptions } from 'three-capture-lighting';
+import { withoutAmbientStandIns } from './ambientStandIns.js';
+import { download, fileName } from './download.js';
+import type { DynamicObjects } from './DynamicObjects.js';
+import { createPanel } from './gui.js';
+import { dropProbes, type ProbeLayout } from './layouts.js';
+import { ProbeEditing, type EditableVolume } from './ProbeEditing.js';
+import { ProbeMarkers } from './ProbeMarkers.js';
+import { exposeForTests } from './testHooks.js';
+import { applyViewMode, hemisphereMatrices } from './viewModes.js';
+import type { Viewer } from './Viewer.js';
+
+/** A page's volume setup: the library calls, in the page; the demo calls them when needed. */
+export interface VolumeSetup {
+
+	/** The page's probe layouts; the panel switches between them (`drop=` leaves probes out). */
+	layouts: ProbeLayout[];
+	/** A volume for a layout: `sh` holds the probes' SH when a volume is rebuilt (else none yet). */
+	createVolume( layout: ProbeLayout, sh?: Float32Array ): LightProbeVolume;
+	/** Registers what the probes light with a new volume (the tetrahedral one, or the trilinear baseline). */
+	addObjects( volume: LightProbeVolume ): void;
+	/**
+	 * Captures the volume's probes (or `options.indices`) with the panel's settings in `options`;
+	 * `options.bounces` > 0: as many diffuse bounces (`captureBounces`).
+	 */
+	capture( volume: LightProbeVolume, options: CaptureBouncesOptions ): Promise<unknown>;
+
+}
+
+/**
+ * The probe volume of a scene page across the panel's changes: the layout shown and its volume
+ * (from the page's `createVolume`), the trilinear baseline for grid layouts, the visibility guard,
+ * captures with a progress bar, baked files (`volume=URL`, "export baked volume"), probe markers,
+ * probe editing, the panel, the status line and the view modes.
+ */
+export class ProbeVolumeDemo implements EditableVolume {
+
+	/** The lil-gui panel (null with `hide=gui`): pages add their own controls to it after `start()`. */
+	gui: GUI | null = null;
+	/** The tetrahedral volume of the layout shown (what is captured and edited). */
+	volume!: LightProbeVolume;
+	/** The page's layouts (without the dropped probes), and a baked file's. */
+	readonly layouts: ProbeLayout[];
+	/** The probe markers and cells drawn. */
+	readonly markers: ProbeMarkers;
+	/** Probe editing (select, drag, add, delete, export). */
+	readonly editing: ProbeEditing;
+	private readonly viewer: Viewer;
+	private readonly objects: DynamicObjects;
+	private readonly setup: VolumeSetup;
+	/** The paper's trilinear baseline over a grid layout's probes (same SH), or null. */
+	private trilinear: LightProbeVolume | null = null;
+	/** The BVH of the static scene for the visibility guard, built the first time it is switched on. */
+	private guard: VisibilityGuard | null = null;
+	private capturing = false;
+	private readonly hemisphere = hemisphereMatrices();
+	private readonly characterCentre = new THREE.Vector3();
+
+	/** Sets the volume up for `viewer`'s page; `objects` are left out of captures and of the guard. */
+	constructor( viewer: Viewer, objects: DynamicObjects, setup: VolumeSetup ) {
+
+		this.viewer = viewer;
+		this.objects = objects;
+		this.setup = setup;
+		this.layouts = setup.layouts.map( ( layout ) => dropProbes( layout, viewer.query.drop ) );
+		if ( viewer.settings.layout === '' ) viewer.settings.layout = this.layouts[ 0 ].name;
+		this.markers = new ProbeMarkers( viewer.helpers, objects.height * 0.12 );
+		this.editing = new ProbeEditing( viewer, this, this.markers );
+		exposeForTests( viewer, objects, this );
+
+	}
+
+	/** Loads the baked volume (`volume=URL`) or creates and captures the first layout's; opens the panel. */
+	async start(): Promise<void> {
+
+		const baked = this.viewer.query.volume;
+		if ( baked ) await this.loadBaked( baked );
+		if ( ! this.viewer.query.hideGui ) this.gui = this.createPanel();
+		if ( ! baked ) {
+
+			this.rebuildVolume();
+			await this.recapture();
+
+		}
+
+	}
+
+	/** The layout shown. */
+	get layout(): ProbeLayout {
+
+		return this.layouts.find( ( layout ) => layout.name === this.viewer.settings.layout ) ?? this.layouts[ 0 ];
+
+	}
+
+	/** Names of the page's probe layouts (for tests and benchmarks). */
+	layoutNames(): string[] {
+
+		return this.layouts.map( ( layout ) => layout.name );
+
+	}
+
+	/** The volume lighting the objects now (tetrahedral, or the trilinear baseline): update it every frame. */
+	get activeVolume(): LightProbeVolume {
+
+		return this.viewer.settings.interpolation === 'trilinear' && this.trilinear ? this.trilinear : this.volume;
+
+	}
+
+	/**
+	 * A new volume for the layout shown, with `sh` (e.g. the probes' SH kept across a change of
+	 * interpolation), or `baked`, a volume loaded from a file, as it is. The objects move to it.
+	 */
+	rebuildVolume( sh?: Float32Array, baked?: LightProbeVolume ): void {
+
+		const layout = this.layout, settings = this.viewer.settings;
+		// dispose(): the old volumes let go of the objects, restoring their materials.
+		this.volume?.dispose();
+		this.trilinear?.dispose();
+		this.volume = baked ?? this.setup.createVolume( layout, sh );
+		this.trilinear = null;
+		if ( layout.grid ) {
+
+			const grid = new GridInterpolator( layout.grid.min, layout.grid.max, layout.grid.counts );
+			this.trilinear = new LightProbeVolume( { positions: grid.positions, interpolator: grid, sh: this.volume.sh } );
+
+		}
+
+		if ( settings.interpolation === 'trilinear' && ! this.trilinear ) settings.interpolation = 'tetrahedral';
+		this.applyGuard();
+		this.setup.addObjects( this.activeVolume );
+		this.viewer.report.probes = this.volume.count;
+		this.gui?.controllersRecursive().forEach( ( controller ) => controller.updateDisplay() );
+
+	}
+
+	/** Captures all probes (or `indices`) with the panel's settings, with a progress bar. */
+	async recapture( indices?: number[] ): Promise<void> {
+
+		if ( this.capturing ) return;
+		this.capturing = true;
+		const start = performance.now();
+		const { settings, overlay, report } = this.viewer;
+		try {
+
+			const options: CaptureBouncesOptions = {
+				resolution: settings.resolution, indices, deringing: settings.deringing, nonNegative: settings.nonNegative,
+				exclude: [ this.viewer.helpers, ...this.objects.list ],
+				onProgress: ( done: number, total: number ) => {
+
+					overlay.progress( `capturing ${done} / ${total} probes at ${settings.resolution}²`, done / total );
+
+				},
+				bounces: settings.bounces,
+				onPass: ( pass: number ) => overlay.progress( `bounce pass ${pass} / ${settings.bounces} done`, 1 ),
+			};
+			// The bounces replace the scenes' faint emissive stand-in for indirect light.
+			if ( settings.bounces > 0 ) await withoutAmbientStandIns( this.viewer.scene, () => this.setup.capture( this.volume, options ) );
+			else await this.setup.capture( this.volume, options );
+			if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
+			report.captureMs = performance.now() - start;
+			overlay.progress( '', 1 );
+			this.updateMarkers();
+
+		} finally {
+
+			this.capturing = false;
+
+		}
+
+	}
+
+	/** Redraws the probe markers and cells of the volume. */
+	updateMarkers(): void {
+
+		this.markers.update( this.volume );
+		this.viewer.report.cells = this.volume.interpolator.cellCount;
+
+	}
+
+	/**
+	 * Every frame, after `activeVolume.update()`: the panel's view mode on `objects` (what the page
+	 * lit), the probe markers and the character's cell, the status line.
+	 */
+	showView( objects: readonly THREE.Object3D[] ): void {
+
+		const { settings, overlay, report } = this.viewer;
+		const volume = this.activeVolume;
+		applyViewMode( volume, objects, settings.view, this.hemisphere );
+		this.markers.show( settings.showProbes, settings.showCells, this.volume, this.objects.characterCentre( this.characterCentre ) );
+		const cells = `${volume.interpolator.cellCount} ${settings.interpolation === 'trilinear' ? 'boxes' : 'cells'}`;
+		overlay.status( `${settings.layout} — ${settings.interpolation}\n${volume.count} probes, ${cells}\n`
+			+ `capture ${report.captureMs.toFixed( 0 )} ms at ${settings.resolution}²\n${this.viewer.fps.toFixed( 0 )} fps` );
+
+	}
+
+	/** Turns the visibility guard on or off on both volumes; its BVH of the static scene is built once. */
+	private applyGuard(): void {
+
+		const { settings, scene, helpers, report } = this.viewer;
+		if ( settings.guard && ! this.guard ) {
+
+			const dynamic = new Set<THREE.Object3D>( [ helpers, ...this.objects.list ] );
+			this.guard = new VisibilityGuard( scene.children.filter( ( object ) => ! dynamic.has( object ) ) );
+
+		}
+
+		const occluders = settings.guard ? this.guard : null;
+		this.volume.setOccluders( occluders );
+		this.trilinear?.setOccluders( occluders );
+		report.leakingCells = settings.guard ? this.volume.findLeakingTetrahedra().length : 0;
+
+	}
+
+	/**
+	 * A baked volume instead of a capture (`volume=URL`, a file from "export baked volume" or
+	 * `capture-lighting bake`): its stored tetrahedralization is used as it is.
+	 */
+	private async loadBaked( url: string ): Promise<void> {
+
+		const { overlay, report, settings } = this.viewer;
+		overlay.progress( `loading ${url}…`, 0 );
+		const response = await fetch( url );
+		if ( ! response.ok ) throw new Error( `Baked volume not found: ${url} (HTTP ${response.status}).` );
+		const buffer = await response.arrayBuffer();
+		const start = performance.now();
+		const volume = LightProbeVolume.fromArrayBuffer( buffer );
+		report.loadMs = performance.now() - start;
+		const name = `baked: ${url.split( /[/?#]/ ).filter( Boolean ).pop()}`;
+		this.layouts.push( { name, positions: Array.from( volume.positions ), names: volume.names.slice(), roles: volume.roles.slice() } );
+		settings.layout = name;
+		this.rebuildVolume( undefined, volume );
+		overlay.progress( '', 1 );
+		this.updateMarkers();
+
+	}
+
+	private createPanel(): GUI {
+
+		return createPanel( this.viewer.settings, this.layouts, {
+			layoutChanged: () => { this.rebuildVolume(); this.recapture(); },
+			interpolationChanged: () => {
+
+				if ( this.viewer.settings.interpolation === 'trilinear' && ! this.trilinear ) {
+
+					this.viewer.settings.interpolation = 'tetrahedral';
+					this.viewer.overlay.notice( 'Trilinear interpolation needs a grid layout.' );
+
+				}
+
+				this.rebuildVolume( this.volume.sh );
+
+			},
+			recapture: () => this.recapture(),
+			rebuildVolume: () => this.rebuildVolume( this.volume.sh ),
+			guardChanged: () => this.applyGuard(),
+			editChanged: () => this.editing.select( - 1 ),
+			addProbe: () => this.editing.addProbe(),
+			removeSelectedProbe: () => this.editing.removeSelectedProbe(),
+			exportLayout: () => this.editing.exportLayout(),
+			// A baked file (float16 SH) of the volume, to load with `?volume=`.
+			exportBaked: () => {
+
+				const file = this.volume.toArrayBuffer( { precision: 'float16' } );
+				download( fileName( this.layout.name, 'lpv' ), file, 'application/octet-stream' );
+
+			},
+		} );
+
+	}
+
+}

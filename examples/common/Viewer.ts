@@ -1,0 +1,135 @@
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import Stats from 'three/addons/libs/stats.module.js';
+import { Overlay } from './Overlay.js';
+import { readDemoQuery, type DemoQuery, type DemoSettings } from './queryParameters.js';
+import { recordFrame, type DemoReport } from './report.js';
+
+/** Where a page's camera starts. */
+export interface ViewerCamera {
+
+	position: number[];
+	target: number[];
+	fov?: number;
+	near?: number;
+	far?: number;
+
+}
+
+/**
+ * The chrome of a scene page: renderer, scene, camera with orbit controls, resizing, stats, the
+ * on-page overlay (status, progress, notices, errors) and the render loop with its timings in
+ * `window.__demo`. It reads the query parameters; the page builds its scene and volume into it.
+ */
+export class Viewer {
+
+	/** Status line, progress bar, notices and errors on the page. */
+	readonly overlay = new Overlay();
+	/** The page's query parameters. */
+	readonly query: DemoQuery = readDemoQuery( location.search );
+	/** The panel's state (query parameters first). */
+	readonly settings: DemoSettings = this.query.settings;
+	/** Base URL of the third-party assets. */
+	readonly assets: string = this.query.assets;
+	/** The scene the page builds and the probes capture. */
+	readonly scene = new THREE.Scene();
+	/** Objects that must not appear in captures (markers, helpers): a group in the scene. */
+	readonly helpers = new THREE.Group();
+	/** `window.__demo`. */
+	readonly report: DemoReport = {
+		ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', leakingCells: 0, error: '',
+	};
+	/** Antialiased, filmic tone mapping (`tonemapping=none`: none), drawing buffer kept for screenshots. */
+	readonly renderer: THREE.WebGLRenderer;
+	readonly camera: THREE.PerspectiveCamera;
+	/** Orbit controls around the page's camera target (probes are added there). */
+	readonly controls: OrbitControls;
+	/** Frames per second, smoothed. */
+	fps = 0;
+	private readonly stats = new Stats();
+	private readonly timer = new THREE.Timer();
+	private time = 0;
+
+	/** Creates the renderer, camera and controls, and shows 'loading the scene…' until the first capture. */
+	constructor( { camera: { position, target, fov = 60, near = 0.05, far = 500 } }: { camera: ViewerCamera } ) {
+
+		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
+		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
+		this.renderer.setSize( window.innerWidth, window.innerHeight );
+		// Filmic tone mapping for viewing; ?tonemapping=none keeps colour ratios for measurements.
+		this.renderer.toneMapping = this.query.noToneMapping ? THREE.NoToneMapping : THREE.ACESFilmicToneMapping;
+		document.body.appendChild( this.renderer.domElement );
+		this.renderer.domElement.addEventListener( 'webglcontextlost', () => {
+
+			this.overlay.error( 'The WebGL context was lost; the probe SH are kept. Waiting for the browser to restore it…' );
+
+		} );
+		this.renderer.domElement.addEventListener( 'webglcontextrestored', () => this.overlay.error( '' ) );
+
+		this.camera = new THREE.PerspectiveCamera( fov, window.innerWidth / window.innerHeight, near, far );
+		this.camera.position.fromArray( position );
+		this.controls = new OrbitControls( this.camera, this.renderer.domElement );
+		this.controls.target.fromArray( target );
+		this.controls.update();
+		this.scene.add( this.helpers );
+
+		if ( ! this.query.hideGui ) document.body.appendChild( this.stats.dom );
+		else document.body.classList.add( 'no-ui' ); // screenshots for tests: no text that changes
+		window.addEventListener( 'resize', () => this.resize() );
+		window.addEventListener( 'error', ( event ) => this.fail( event.message ) );
+		window.addEventListener( 'unhandledrejection', ( event ) => this.fail( String( event.reason?.message ?? event.reason ) ) );
+		Object.assign( window, { __demo: this.report } );
+		this.overlay.progress( 'loading the scene…', 0 );
+
+	}
+
+	/** Shows an error on the page (not only in the console) and records it for tests. */
+	fail( message: string ): void {
+
+		this.report.error = message;
+		this.overlay.error( message );
+
+	}
+
+	/** For a page's `init().catch( … )`: the error on the page and in the console. */
+	showError( error: unknown ): void {
+
+		this.fail( ( error as Error ).message );
+		console.error( error );
+
+	}
+
+	/**
+	 * Starts the render loop: every frame calls `frame( time, delta )` — seconds; `t=` freezes
+	 * time, the panel's "animate" off makes delta 0 — then renders and records the frame's timings.
+	 */
+	animate( frame: ( time: number, delta: number ) => void ): void {
+
+		this.renderer.setAnimationLoop( ( timestamp ) => {
+
+			this.timer.update( timestamp );
+			const delta = this.timer.getDelta();
+			const step = this.settings.animate ? delta : 0;
+			this.time = this.query.time !== null ? this.query.time : this.time + step;
+			const start = performance.now();
+
+			frame( this.time, step );
+			this.renderer.render( this.scene, this.camera );
+
+			this.stats.update();
+			recordFrame( this.report, performance.now() - start, delta * 1000 );
+			if ( delta > 0 ) this.fps += ( 1 / delta - this.fps ) * 0.05;
+
+		} );
+
+	}
+
+	private resize(): void {
+
+		this.camera.aspect = window.innerWidth / window.innerHeight;
+		this.camera.updateProjectionMatrix();
+		this.renderer.setSize( window.innerWidth, window.innerHeight );
+
+	}
+
+}
