@@ -10,14 +10,34 @@ const LEAF_SIZE = 4;
 // log2(n / LEAF_SIZE): 64 is enough for any array that fits in memory.
 const STACK_SIZE = 64;
 
+// Segment hits this close to either end (in segment-parameter units) do not count: a probe or an
+// object standing exactly on a surface still sees along it.
+const END_EPSILON = 1e-6;
+
+// The node tests of `nextLeaf`: a ray or segment meets the box, the box is within a closed ball,
+// the box is within an open ball (and the nearer child goes first).
+const RAY = 0, BALL = 1, NEAREST = 2;
+
 const _closest = new Float64Array( 6 );
 
+/** A ray hit of {@link TriangleBVH.raycastFirst}: the ray parameter and the triangle's index (−1, −1: none). */
+export interface RayHit {
+
+	/** Ray parameter of the hit (point = o + t · d), or −1. */
+	t: number;
+
+	/** Index of the triangle hit, or −1. */
+	triangle: number;
+
+}
+
 /**
- * A bounding volume hierarchy over a flat triangle array, for the queries probe placement needs in
- * plain Node: counting ray crossings (inside/outside by parity) and "is any triangle within r of
- * this point". Built once by median splits on the longest axis of the triangle centroids
- * (O(n log n)); each query then touches O(log n) nodes for a compact scene, so 100k triangles ×
- * thousands of candidates × a few rays take well under a second.
+ * A bounding volume hierarchy over a flat triangle array, for the queries probe placement and
+ * probe visibility need in plain Node: counting ray crossings (inside/outside by parity), "is this
+ * segment blocked", the first hit of a ray, "is any triangle within r of this point" and the
+ * nearest distance — all through one traversal. Built once by median splits on the longest axis
+ * of the triangle centroids (O(n log n)); each query then touches O(log n) nodes for a compact
+ * scene, so 100k triangles × thousands of candidates × a few rays take well under a second.
  *
  * Nodes are stored depth-first in typed arrays: an inner node's left child follows it, its right
  * child index is in `rightOrStart`; a leaf has `count > 0` triangles `order[rightOrStart …]`.
@@ -39,7 +59,11 @@ export class TriangleBVH {
 	/** Triangle indices, grouped by leaf. */
 	readonly order: Uint32Array;
 
+	/** Per triangle: min x, y, z, max x, y, z — a cheap reject before the exact segment test. */
+	readonly triangleBounds: Float64Array;
+
 	private readonly stack = new Int32Array( STACK_SIZE );
+	private top = 0;
 
 	/**
 	 * @param triangles 9 floats per triangle (a, b, c), e.g. world-space positions of a non-indexed
@@ -58,7 +82,7 @@ export class TriangleBVH {
 		this.triangles = Float64Array.from( triangles );
 		const count = triangles.length / 9;
 
-		const bounds = new Float64Array( 6 * count ), centroids = new Float64Array( 3 * count );
+		const bounds = this.triangleBounds = new Float64Array( 6 * count ), centroids = new Float64Array( 3 * count );
 		for ( let t = 0; t < count; t ++ ) {
 
 			for ( let a = 0; a < 3; a ++ ) {
@@ -143,29 +167,17 @@ export class TriangleBVH {
 	 */
 	countCrossings( ox: number, oy: number, oz: number, dx: number, dy: number, dz: number ): number {
 
-		if ( this.nodeTriangleCounts.length === 0 ) return 0;
-		const bounds = this.nodeBounds, right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, stack = this.stack;
-		// Reciprocal direction for the slab test; a zero component gives ±Infinity, handled in rayHitsBox.
+		const right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, tri = this.triangles;
+		// Reciprocal direction for the slab test; a zero component gives ±Infinity, handled in hitsBox.
 		const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-		let crossings = 0, top = 0;
-		stack[ top ++ ] = 0;
-		while ( top > 0 ) {
+		let crossings = 0;
+		this.pushRoot();
+		let leaf: number;
+		while ( ( leaf = this.nextLeaf( RAY, ox, oy, oz, ix, iy, iz, Infinity ) ) >= 0 ) {
 
-			const node = stack[ -- top ];
-			if ( ! hitsBox( bounds, 6 * node, ox, oy, oz, ix, iy, iz, Infinity ) ) continue;
-			const count = counts[ node ];
-			if ( count > 0 ) {
+			for ( let i = right[ leaf ], end = i + counts[ leaf ]; i < end; i ++ ) {
 
-				for ( let i = right[ node ], end = i + count; i < end; i ++ ) {
-
-					if ( intersectRayTriangle( this.triangles, order[ i ], ox, oy, oz, dx, dy, dz ) > 0 ) crossings ++;
-
-				}
-
-			} else {
-
-				stack[ top ++ ] = right[ node ];
-				stack[ top ++ ] = node + 1;
+				if ( intersectRayTriangle( tri, order[ i ], ox, oy, oz, dx, dy, dz ) > 0 ) crossings ++;
 
 			}
 
@@ -176,35 +188,103 @@ export class TriangleBVH {
 	}
 
 	/**
+	 * Whether the open segment from a to b crosses any triangle: hits within 1e-6 of the segment's
+	 * length from either end do not count (a probe or an object standing exactly on a surface still
+	 * sees along it); a zero-length segment is never blocked. Stops at the first hit. Allocation-free.
+	 */
+	segmentBlocked( ax: number, ay: number, az: number, bx: number, by: number, bz: number ): boolean {
+
+		const right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, tri = this.triangles;
+		const triangleBounds = this.triangleBounds;
+		const dx = bx - ax, dy = by - ay, dz = bz - az;
+		if ( dx === 0 && dy === 0 && dz === 0 ) return false;
+		const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+		this.pushRoot();
+		let leaf: number;
+		while ( ( leaf = this.nextLeaf( RAY, ax, ay, az, ix, iy, iz, 1 ) ) >= 0 ) {
+
+			for ( let i = right[ leaf ], end = i + counts[ leaf ]; i < end; i ++ ) {
+
+				const triangle = order[ i ];
+				// The triangle's own box first: leaves mix large and small triangles.
+				if ( ! hitsBox( triangleBounds, 6 * triangle, ax, ay, az, ix, iy, iz, 1 ) ) continue;
+				// d = b − a, so the hit parameter is the fraction of the segment.
+				const t = intersectRayTriangle( tri, triangle, ax, ay, az, dx, dy, dz );
+				if ( t > END_EPSILON && t < 1 - END_EPSILON ) return true;
+
+			}
+
+		}
+
+		return false;
+
+	}
+
+	/**
+	 * The nearest hit of the ray o + t · d with 0 < t < `tMax` (both faces). Allocation-free.
+	 * @param dx Ray direction x (and `dy`, `dz`); need not be unit length — t is in its units.
+	 * @param tMax Farthest ray parameter that counts (default Infinity; 1 with d = b − a: a segment).
+	 * @param target Receives the hit's `t` and `triangle` index (−1 for both when nothing is hit).
+	 * @returns The hit's ray parameter t, or −1 when nothing is hit.
+	 */
+	raycastFirst(
+		ox: number, oy: number, oz: number, dx: number, dy: number, dz: number, tMax = Infinity, target?: RayHit
+	): number {
+
+		const right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, tri = this.triangles;
+		const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
+		let best = tMax, found = - 1;
+		this.pushRoot();
+		let leaf: number;
+		while ( ( leaf = this.nextLeaf( RAY, ox, oy, oz, ix, iy, iz, best ) ) >= 0 ) {
+
+			for ( let i = right[ leaf ], end = i + counts[ leaf ]; i < end; i ++ ) {
+
+				const t = intersectRayTriangle( tri, order[ i ], ox, oy, oz, dx, dy, dz );
+				if ( t > 0 && t < best ) {
+
+					best = t;
+					found = order[ i ];
+
+				}
+
+			}
+
+		}
+
+		const t = found < 0 ? - 1 : best;
+		if ( target !== undefined ) {
+
+			target.t = t;
+			target.triangle = found;
+
+		}
+
+		return t;
+
+	}
+
+	/**
 	 * Whether any triangle has a point within `radius` of (x, y, z) (closed ball). Stops at the first
 	 * one found. Allocation-free.
 	 */
 	anyWithin( x: number, y: number, z: number, radius: number ): boolean {
 
-		if ( this.nodeTriangleCounts.length === 0 || ! ( radius >= 0 ) ) return false;
-		const bounds = this.nodeBounds, right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, stack = this.stack;
-		const tri = this.triangles, r2 = radius * radius;
-		let top = 0;
-		stack[ top ++ ] = 0;
-		while ( top > 0 ) {
+		if ( ! ( radius >= 0 ) ) return false;
+		const right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, tri = this.triangles;
+		const r2 = radius * radius;
+		this.pushRoot();
+		let leaf: number;
+		while ( ( leaf = this.nextLeaf( BALL, x, y, z, 0, 0, 0, r2 ) ) >= 0 ) {
 
-			const node = stack[ -- top ];
-			if ( boxDistanceSquared( bounds, 6 * node, x, y, z ) > r2 ) continue;
-			const count = counts[ node ];
-			if ( count > 0 ) {
+			for ( let i = right[ leaf ], end = i + counts[ leaf ]; i < end; i ++ ) {
 
-				for ( let i = right[ node ], end = i + count; i < end; i ++ ) {
-
-					const k = 9 * order[ i ];
-					const d2 = closestPointOnTriangle( x, y, z, tri[ k ], tri[ k + 1 ], tri[ k + 2 ], tri[ k + 3 ], tri[ k + 4 ], tri[ k + 5 ], tri[ k + 6 ], tri[ k + 7 ], tri[ k + 8 ], _closest );
-					if ( d2 <= r2 ) return true;
-
-				}
-
-			} else {
-
-				stack[ top ++ ] = right[ node ];
-				stack[ top ++ ] = node + 1;
+				const k = 9 * order[ i ];
+				const d2 = closestPointOnTriangle(
+					x, y, z, tri[ k ], tri[ k + 1 ], tri[ k + 2 ], tri[ k + 3 ], tri[ k + 4 ], tri[ k + 5 ],
+					tri[ k + 6 ], tri[ k + 7 ], tri[ k + 8 ], _closest
+				);
+				if ( d2 <= r2 ) return true;
 
 			}
 
@@ -223,45 +303,89 @@ export class TriangleBVH {
 		assertNumber( 'TriangleBVH.nearestDistance', 'x', x );
 		assertNumber( 'TriangleBVH.nearestDistance', 'y', y );
 		assertNumber( 'TriangleBVH.nearestDistance', 'z', z );
-		if ( this.nodeTriangleCounts.length === 0 ) return Infinity;
-		const bounds = this.nodeBounds, right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, stack = this.stack;
-		const tri = this.triangles;
-		let best = Infinity, top = 0;
-		stack[ top ++ ] = 0;
-		while ( top > 0 ) {
+		const right = this.rightOrStart, counts = this.nodeTriangleCounts, order = this.order, tri = this.triangles;
+		let best = Infinity;
+		this.pushRoot();
+		let leaf: number;
+		while ( ( leaf = this.nextLeaf( NEAREST, x, y, z, 0, 0, 0, best ) ) >= 0 ) {
 
-			const node = stack[ -- top ];
-			if ( boxDistanceSquared( bounds, 6 * node, x, y, z ) >= best ) continue;
-			const count = counts[ node ];
-			if ( count > 0 ) {
+			for ( let i = right[ leaf ], end = i + counts[ leaf ]; i < end; i ++ ) {
 
-				for ( let i = right[ node ], end = i + count; i < end; i ++ ) {
-
-					const k = 9 * order[ i ];
-					const d2 = closestPointOnTriangle( x, y, z, tri[ k ], tri[ k + 1 ], tri[ k + 2 ], tri[ k + 3 ], tri[ k + 4 ], tri[ k + 5 ], tri[ k + 6 ], tri[ k + 7 ], tri[ k + 8 ], _closest );
-					if ( d2 < best ) best = d2;
-
-				}
-
-			} else {
-
-				// Nearer child last, so it is popped (and tightens `best`) first.
-				const left = node + 1, r = right[ node ];
-				if ( boxDistanceSquared( bounds, 6 * left, x, y, z ) <= boxDistanceSquared( bounds, 6 * r, x, y, z ) ) {
-
-					stack[ top ++ ] = r; stack[ top ++ ] = left;
-
-				} else {
-
-					stack[ top ++ ] = left; stack[ top ++ ] = r;
-
-				}
+				const k = 9 * order[ i ];
+				const d2 = closestPointOnTriangle(
+					x, y, z, tri[ k ], tri[ k + 1 ], tri[ k + 2 ], tri[ k + 3 ], tri[ k + 4 ], tri[ k + 5 ],
+					tri[ k + 6 ], tri[ k + 7 ], tri[ k + 8 ], _closest
+				);
+				if ( d2 < best ) best = d2;
 
 			}
 
 		}
 
 		return Math.sqrt( best );
+
+	}
+
+	/** Starts a traversal: the stack holds the root (nothing when there are no triangles). */
+	private pushRoot(): void {
+
+		this.stack[ 0 ] = 0;
+		this.top = this.nodeTriangleCounts.length > 0 ? 1 : 0;
+
+	}
+
+	/**
+	 * The one traversal behind every query: pops nodes off the instance's stack (depth first, from
+	 * {@link TriangleBVH.pushRoot}) until a leaf passes the test, pushing the children of every
+	 * inner node that passes. RAY (o = x, y, z; reciprocal direction i): the box meets o + t · d for
+	 * some t ∈ [0, limit]. BALL: the box is within the squared distance `limit` of (x, y, z);
+	 * NEAREST: strictly within it, and the nearer child is visited first (it tightens `limit` sooner).
+	 * @returns The leaf's node index, or −1 when the traversal is over.
+	 */
+	private nextLeaf( test: number, x: number, y: number, z: number, ix: number, iy: number, iz: number, limit: number ): number {
+
+		const bounds = this.nodeBounds, right = this.rightOrStart, counts = this.nodeTriangleCounts, stack = this.stack;
+		let top = this.top;
+		while ( top > 0 ) {
+
+			const node = stack[ -- top ];
+			if ( test === RAY ) {
+
+				if ( ! hitsBox( bounds, 6 * node, x, y, z, ix, iy, iz, limit ) ) continue;
+
+			} else {
+
+				const d2 = boxDistanceSquared( bounds, 6 * node, x, y, z );
+				if ( test === NEAREST ? d2 >= limit : d2 > limit ) continue;
+
+			}
+
+			if ( counts[ node ] > 0 ) {
+
+				this.top = top;
+				return node;
+
+			}
+
+			stack[ top ++ ] = right[ node ]; stack[ top ++ ] = node + 1;
+			if ( test === NEAREST ) nearerOnTop( bounds, stack, top, x, y, z );
+
+		}
+
+		this.top = 0;
+		return - 1;
+
+	}
+
+}
+
+/** Swaps the two children just pushed when the left one (on top) is the farther. */
+function nearerOnTop( bounds: Float64Array, stack: Int32Array, top: number, x: number, y: number, z: number ): void {
+
+	const left = stack[ top - 1 ], right = stack[ top - 2 ];
+	if ( boxDistanceSquared( bounds, 6 * left, x, y, z ) > boxDistanceSquared( bounds, 6 * right, x, y, z ) ) {
+
+		stack[ top - 1 ] = right; stack[ top - 2 ] = left;
 
 	}
 

@@ -1,15 +1,7 @@
 import type { Object3D } from 'three';
-import { TriangleBVH, hitsBox } from '../geometry/TriangleBVH.js';
+import { TriangleBVH } from '../geometry/TriangleBVH.js';
 import { gatherWorldGeometry } from '../geometry/gatherWorldGeometry.js';
-import { intersectRayTriangle } from '../geometry/intersectRayTriangle.js';
 import { assertArrayLike, assertNumber } from '../validate.js';
-
-// Hits this close to either end of a segment (in segment-parameter units) do not count: a probe or
-// an object standing exactly on a surface still sees along it.
-const END_EPSILON = 1e-6;
-
-// Same depth bound as TriangleBVH's own traversal stack (median splits: depth ≈ log2(n / 4)).
-const STACK_SIZE = 64;
 
 /** How many of the nearest probes {@link VisibilityGuard.nearestVisible} tries before giving up. */
 const NEAREST_CANDIDATES = 8;
@@ -56,9 +48,6 @@ export class VisibilityGuard {
 	/** See {@link VisibilityGuardOptions.moveThreshold}; undefined lets the volume choose. */
 	readonly moveThreshold: number | undefined;
 
-	private readonly stack = new Int32Array( STACK_SIZE );
-	/** Per triangle: min x, y, z, max x, y, z — a cheap reject before the exact test (leaves mix large and small triangles). */
-	private readonly triangleBounds: Float64Array;
 	private readonly nearestIndices = new Int32Array( NEAREST_CANDIDATES );
 	private readonly nearestDistances = new Float64Array( NEAREST_CANDIDATES );
 
@@ -71,20 +60,6 @@ export class VisibilityGuard {
 	constructor( occluders: TriangleBVH | ArrayLike<number> | Object3D | readonly Object3D[], options: VisibilityGuardOptions = {} ) {
 
 		this.bvh = toBVH( occluders );
-		const tri = this.bvh.triangles, count = tri.length / 9;
-		this.triangleBounds = new Float64Array( 6 * count );
-		for ( let t = 0; t < count; t ++ ) {
-
-			for ( let a = 0; a < 3; a ++ ) {
-
-				const v0 = tri[ 9 * t + a ], v1 = tri[ 9 * t + 3 + a ], v2 = tri[ 9 * t + 6 + a ];
-				this.triangleBounds[ 6 * t + a ] = Math.min( v0, v1, v2 );
-				this.triangleBounds[ 6 * t + 3 + a ] = Math.max( v0, v1, v2 );
-
-			}
-
-		}
-
 		const blockedWeight = options.blockedWeight ?? 0;
 		assertNumber( 'VisibilityGuard', 'options.blockedWeight', blockedWeight );
 		if ( blockedWeight < 0 || blockedWeight >= 1 ) throw new RangeError( `VisibilityGuard: options.blockedWeight must be in [0, 1), got ${blockedWeight}.` );
@@ -102,46 +77,11 @@ export class VisibilityGuard {
 
 	/**
 	 * Whether the open segment from a to b crosses any occluder triangle (hits within 1e-6 of the
-	 * segment's length from either end are ignored). Stops at the first hit. Allocation-free.
+	 * segment's length from either end are ignored): {@link TriangleBVH.segmentBlocked}. Allocation-free.
 	 */
 	segmentBlocked( ax: number, ay: number, az: number, bx: number, by: number, bz: number ): boolean {
 
-		const bvh = this.bvh;
-		if ( bvh.nodeTriangleCounts.length === 0 ) return false;
-		const bounds = bvh.nodeBounds, right = bvh.rightOrStart, counts = bvh.nodeTriangleCounts, order = bvh.order, tri = bvh.triangles, stack = this.stack;
-		const triangleBounds = this.triangleBounds;
-		const dx = bx - ax, dy = by - ay, dz = bz - az;
-		if ( dx === 0 && dy === 0 && dz === 0 ) return false;
-		const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-		let top = 0;
-		stack[ top ++ ] = 0;
-		while ( top > 0 ) {
-
-			const node = stack[ -- top ];
-			if ( ! hitsBox( bounds, 6 * node, ax, ay, az, ix, iy, iz, 1 ) ) continue;
-			const count = counts[ node ];
-			if ( count > 0 ) {
-
-				for ( let i = right[ node ], end = i + count; i < end; i ++ ) {
-
-					const triangle = order[ i ];
-					if ( ! hitsBox( triangleBounds, 6 * triangle, ax, ay, az, ix, iy, iz, 1 ) ) continue;
-					// d = b − a, so the hit parameter is the fraction of the segment.
-					const t = intersectRayTriangle( tri, triangle, ax, ay, az, dx, dy, dz );
-					if ( t > END_EPSILON && t < 1 - END_EPSILON ) return true;
-
-				}
-
-			} else {
-
-				stack[ top ++ ] = right[ node ];
-				stack[ top ++ ] = node + 1;
-
-			}
-
-		}
-
-		return false;
+		return this.bvh.segmentBlocked( ax, ay, az, bx, by, bz );
 
 	}
 

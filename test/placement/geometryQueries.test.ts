@@ -137,6 +137,42 @@ describe( 'TriangleBVH', () => {
 
 	} );
 
+	it( 'finds blocked segments and first hits like testing every triangle', () => {
+
+		const hit = { t: 0, triangle: 0 };
+		let blocked = 0, hits = 0;
+		for ( let r = 0; r < 300; r ++ ) {
+
+			const a = [ 1.4 * random() - 0.2, 1.4 * random() - 0.2, 1.4 * random() - 0.2 ];
+			const b = [ 1.4 * random() - 0.2, 1.4 * random() - 0.2, 1.4 * random() - 0.2 ];
+			if ( r % 10 === 0 ) { b[ 1 ] = a[ 1 ]; b[ 2 ] = a[ 2 ]; } // axis-parallel: zero reciprocal directions
+			const d = [ b[ 0 ] - a[ 0 ], b[ 1 ] - a[ 1 ], b[ 2 ] - a[ 2 ] ];
+			const tMax = r % 3 === 0 ? 0.5 : Infinity;
+			let inside = false, bestT = Infinity, best = - 1;
+			for ( let t = 0; t < 5000; t ++ ) {
+
+				const s = intersectRayTriangle( triangles, t, a[ 0 ], a[ 1 ], a[ 2 ], d[ 0 ], d[ 1 ], d[ 2 ] );
+				if ( s > 1e-6 && s < 1 - 1e-6 ) inside = true;
+				if ( s > 0 && s < tMax && s < bestT ) { bestT = s; best = t; }
+
+			}
+
+			expect( bvh.segmentBlocked( a[ 0 ], a[ 1 ], a[ 2 ], b[ 0 ], b[ 1 ], b[ 2 ] ), `segment ${r}` ).toBe( inside );
+			const t = bvh.raycastFirst( a[ 0 ], a[ 1 ], a[ 2 ], d[ 0 ], d[ 1 ], d[ 2 ], tMax, hit );
+			expect( t ).toBe( best < 0 ? - 1 : bestT );
+			expect( hit ).toEqual( { t, triangle: best } );
+			if ( inside ) blocked ++;
+			if ( best >= 0 ) hits ++;
+
+		}
+
+		// Both outcomes well represented.
+		expect( blocked ).toBeGreaterThan( 30 );
+		expect( 300 - blocked ).toBeGreaterThan( 30 );
+		expect( hits ).toBeGreaterThan( 30 );
+
+	} );
+
 	it( 'measures distance to a tessellated sphere as |‖p‖ − r| within the tessellation error', () => {
 
 		// Independent truth: the analytic sphere. 64 × 48 segments deviate from it by at most the
@@ -157,6 +193,10 @@ describe( 'TriangleBVH', () => {
 		expect( empty.countCrossings( 0, 0, 0, 1, 0, 0 ) ).toBe( 0 );
 		expect( empty.anyWithin( 0, 0, 0, 1e9 ) ).toBe( false );
 		expect( empty.nearestDistance( 0, 0, 0 ) ).toBe( Infinity );
+		expect( empty.segmentBlocked( 0, 0, 0, 1, 0, 0 ) ).toBe( false );
+		const miss = { t: 0, triangle: 0 };
+		expect( empty.raycastFirst( 0, 0, 0, 1, 0, 0, Infinity, miss ) ).toBe( - 1 );
+		expect( miss ).toEqual( { t: - 1, triangle: - 1 } );
 		// 20 copies of one triangle cannot be split: one leaf holds them all, and all are found.
 		const copies = new Float64Array( 9 * 20 );
 		for ( let t = 0; t < 20; t ++ ) copies.set( [ 0, 0, 0, 1, 0, 0, 0, 1, 0 ], 9 * t );
