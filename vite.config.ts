@@ -11,7 +11,12 @@ export default defineConfig( {
 	root: resolve( root, 'examples' ),
 	plugins: [ assetsPlugin() ],
 	resolve: {
-		alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) },
+		alias: [
+			// The package's entries: 'three-capture-lighting' and its subpaths (/math, /format, /capture, /lightProbeGrid).
+			{ find: /^three-capture-lighting$/, replacement: resolve( root, 'src/index.ts' ) },
+			{ find: /^three-capture-lighting\/(math|format|capture|lightProbeGrid)$/, replacement: resolve( root, 'src/$1.ts' ) },
+			{ find: '@scenes', replacement: resolve( root, 'scenes' ) },
+		],
 	},
 	server: { host: '127.0.0.1', port: 5173, strictPort: false },
 	optimizeDeps: { noDiscovery: true, include: [] },

@@ -261,7 +261,7 @@ function measureMeshMoves( current: () => Mesh, move: ( i: number, x: number, y:
 }
 
 /** interpolate() at 2,000 points in and around the hull equals a mesh from scratch (all ids active after move-and-back). */
-function checkAgainstScratch( TetrahedralMesh: new ( positions: ArrayLike<number> ) => Mesh, mesh: Mesh ): boolean {
+function checkAgainstScratch( TetrahedralMesh: new ( positions: ArrayLike<number> ) => Pick<Mesh, 'interpolate'>, mesh: Mesh ): boolean {
 
 	const p = mesh.positions, scratch = new TetrahedralMesh( p.slice() );
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];

@@ -10,6 +10,13 @@ export default defineConfig( {
 	root: resolve( root, 'cli/bakePage' ),
 	base: './',
 	logLevel: 'warn',
-	resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
+	resolve: {
+		alias: [
+			// The package's entries: 'three-capture-lighting' and its subpaths (/math, /format, /capture, /lightProbeGrid).
+			{ find: /^three-capture-lighting$/, replacement: resolve( root, 'src/index.ts' ) },
+			{ find: /^three-capture-lighting\/(math|format|capture|lightProbeGrid)$/, replacement: resolve( root, 'src/$1.ts' ) },
+			{ find: '@scenes', replacement: resolve( root, 'scenes' ) },
+		],
+	},
 	build: { outDir: resolve( root, 'dist/cli/page' ), emptyOutDir: true, chunkSizeWarningLimit: 2000 },
 } );
