@@ -1,4 +1,5 @@
-import { LightProbeVolume, captureBounces, createProbeInterpolator } from 'three-capture-lighting';
+import { LightProbeVolume, captureBounces } from 'three-capture-lighting';
+import { createProbeInterpolator } from 'three-capture-lighting/math';
 import { buildSibenik, sibenikLayouts, sibenikPath, SIBENIK_CHARACTER_HEIGHT } from '@scenes/sibenik.js';
 import { DynamicObjects } from './common/DynamicObjects.js';
 import { zonesOf } from './common/layouts.js';

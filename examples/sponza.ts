@@ -1,5 +1,6 @@
 import * as THREE from 'three';
-import { LightProbeVolume, captureBounces, createProbeInterpolator, type AddOptions } from 'three-capture-lighting';
+import { LightProbeVolume, captureBounces, type AddOptions } from 'three-capture-lighting';
+import { createProbeInterpolator } from 'three-capture-lighting/math';
 import { buildSponza, sponzaLayouts, sponzaPath, SPONZA_CHARACTER_HEIGHT } from '@scenes/sponza.js';
 import { DynamicObjects } from './common/DynamicObjects.js';
 import { zonesOf } from './common/layouts.js';

@@ -1,5 +1,6 @@
 import * as THREE from 'three';
-import { LightProbeVolume, captureBounces, createProbeInterpolator } from 'three-capture-lighting';
+import { LightProbeVolume, captureBounces } from 'three-capture-lighting';
+import { createProbeInterpolator } from 'three-capture-lighting/math';
 import { createTwoRooms } from '@scenes/twoRooms.js';
 import { DynamicObjects } from './common/DynamicObjects.js';
 import { zonesOf } from './common/layouts.js';

@@ -1,5 +1,5 @@
 import * as THREE from 'three';
-import { GridInterpolator } from 'three-capture-lighting';
+import { GridInterpolator } from 'three-capture-lighting/math';
 import arbitrary from './sibenik.json';
 import { addStaticSun, createSky, loadOBJScene, type SceneHost } from './loadOBJScene.js';
 import type { ProbeLayout } from './layout.js';

@@ -13,7 +13,8 @@ import { LightProbeGenerator } from 'three/examples/jsm/lights/LightProbeGenerat
 import { LightProbeGridWebGL } from 'three/examples/jsm/lighting/LightProbeGridWebGL.js';
 // Relative, so `npm run typecheck` sees src/ (not a stale dist/); the bench's Vite server
 // redirects it to BENCH_OURS when that is set.
-import { LightProbeVolume, ProbeCapturer, SHProjector } from '../../src/index.js';
+import { LightProbeVolume } from '../../src/index.js';
+import { ProbeCapturer, SHProjector } from '../../src/capture.js';
 
 const WIDTH = 1280, HEIGHT = 720;
 const ROOM_MIN = [ - 2, 0, - 2 ], ROOM_MAX = [ 2, 3, 2 ];

@@ -1,5 +1,6 @@
 import * as THREE from 'three';
-import { evaluateIrradiance, type LightProbeVolume, type TetrahedralMesh } from 'three-capture-lighting';
+import { type LightProbeVolume } from 'three-capture-lighting';
+import { evaluateIrradiance, type TetrahedralMesh } from 'three-capture-lighting/math';
 
 const EDGES = [ [ 0, 1 ], [ 0, 2 ], [ 0, 3 ], [ 1, 2 ], [ 1, 3 ], [ 2, 3 ] ];
 

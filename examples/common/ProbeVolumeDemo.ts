@@ -1,6 +1,7 @@
 import * as THREE from 'three';
 import type GUI from 'lil-gui';
-import { GridInterpolator, LightProbeVolume, VisibilityGuard, type CaptureBouncesOptions } from 'three-capture-lighting';
+import { LightProbeVolume, VisibilityGuard, type CaptureBouncesOptions } from 'three-capture-lighting';
+import { GridInterpolator } from 'three-capture-lighting/math';
 import { withoutAmbientStandIns } from './ambientStandIns.js';
 import { download, fileName } from './download.js';
 import type { DynamicObjects } from './DynamicObjects.js';

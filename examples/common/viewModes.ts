@@ -1,5 +1,6 @@
 import type * as THREE from 'three';
-import { irradianceMatrices, type LightProbeVolume } from 'three-capture-lighting';
+import { type LightProbeVolume } from 'three-capture-lighting';
+import { irradianceMatrices } from 'three-capture-lighting/math';
 import type { ViewMode } from './queryParameters.js';
 
 /**

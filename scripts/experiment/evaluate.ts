@@ -4,7 +4,7 @@
  * the result JSON, and the verdict on the paper's claim.
  */
 
-import { GridInterpolator, blendSH, createProbeInterpolator, irradianceError, type ProbeInterpolator } from '../../src/index.js';
+import { GridInterpolator, blendSH, createProbeInterpolator, irradianceError, type ProbeInterpolator } from '../../src/math.js';
 import { summarizeErrors } from '../../src/placement/irradianceError.js';
 
 /** How a layout turns positions into weights. */

@@ -7,7 +7,8 @@
  */
 
 import * as THREE from 'three';
-import { ProbeCapturer, placeFromMeshes } from '../../src/index.js';
+import { placeFromMeshes } from '../../src/index.js';
+import { ProbeCapturer } from '../../src/capture.js';
 import type { ProbeLayout } from '../../scenes/layout.js';
 import type { SceneHost } from '../../scenes/loadOBJScene.js';
 import { toBase64 } from './pageData.js';

@@ -1,5 +1,5 @@
 import { afterAll, describe, expect, it } from 'vitest';
-import { SHProjector } from '../../src/index.js';
+import { SHProjector } from '../../src/capture.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 
 const ctx = await createHeadlessRenderer( 4, 4 );

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { GridInterpolator, placeGrid } from '../../src/index.js';
+import { placeGrid } from '../../src/index.js';
+import { GridInterpolator } from '../../src/math.js';
 import { evaluateLayout, gridValidSamples, predictSH, interpolatorOf, subsetPositions, subsetSH, verdictOf, type LayoutResult } from '../../scripts/experiment/evaluate.js';
 import { parseArguments } from '../../scripts/experiment/cli.js';
 import { layoutTable, logTicks, markdownReport, plotSVG, validateResult, type ExperimentResult } from '../../scripts/experiment/report.js';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { GridInterpolator, blendSH } from '../../src/index.js';
+import { GridInterpolator, blendSH } from '../../src/math.js';
 import { seededRandom } from '../helpers/pointSets.js';
 
 describe( 'GridInterpolator (the paper\'s 8-probe trilinear baseline)', () => {

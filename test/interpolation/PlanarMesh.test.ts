@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { PlanarMesh, TetrahedralMesh, createProbeInterpolator, DegenerateInputError } from '../../src/index.js';
+import { DegenerateInputError } from '../../src/index.js';
+import { PlanarMesh, TetrahedralMesh, createProbeInterpolator } from '../../src/math.js';
 import { seededRandom } from '../helpers/pointSets.js';
 
 /** 30 random probes on a tilted plane through (1, 2, 3) spanned by two unit vectors. */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { blendSH } from '../../src/index.js';
+import { blendSH } from '../../src/math.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 describe( 'blendSH', () => {

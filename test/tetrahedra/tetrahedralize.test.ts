@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { tetrahedralize, DegenerateInputError } from '../../src/index.js';
+import { DegenerateInputError } from '../../src/index.js';
+import { tetrahedralize } from '../../src/math.js';
 import { checkDelaunay, type DelaunayReport } from '../helpers/delaunayChecks.js';
 import { gridPoints, integerSpherePoints, randomPoints, seededRandom } from '../helpers/pointSets.js';
 

@@ -1,5 +1,6 @@
 import * as THREE from 'three';
-import { SHProjector, projectCubeMapToSH } from 'three-capture-lighting';
+import { projectCubeMapToSH } from 'three-capture-lighting/math';
+import { SHProjector } from 'three-capture-lighting/capture';
 
 // The GPU projection in Chromium, with multiple render targets (what browsers use; headless-gl
 // cannot) and with the four-draw fallback, against the CPU projection of the read-back faces.
