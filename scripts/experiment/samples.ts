@@ -4,7 +4,8 @@
  * space of a box, and the dense candidate set the automatic reduction starts from.
  */
 
-import { TriangleBVH, candidatesFromVertices, intersectRayTriangle } from '../../src/index.js';
+import { candidatesFromVertices } from '../../src/index.js';
+import { TriangleBVH, intersectRayTriangle } from '../../src/math.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /** An axis-aligned box, [x, y, z] each. */

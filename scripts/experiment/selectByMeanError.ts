@@ -8,8 +8,8 @@
  * the choice differs. Like `reduceProbes`, it never sees the ground truth.
  */
 
-import { IRRADIANCE_ERROR_NORMALS, createProbeInterpolator } from '../../src/index.js';
-import { irradianceAtNormals, irradianceErrorScale, pointIrradianceError } from '../../src/placement/irradianceError.js';
+import { IRRADIANCE_ERROR_NORMALS, createProbeInterpolator } from '../../src/math.js';
+import { blendRows, irradianceAtNormals, irradianceErrorScale, pointIrradianceError } from '../../src/placement/irradianceError.js';
 
 export interface SelectOptions {
 
@@ -54,16 +54,7 @@ export function selectByMeanError( positions: ArrayLike<number>, sh: ArrayLike<n
 		for ( let p = 0; p < count; p ++ ) {
 
 			hint = interpolator.interpolate( positions[ 3 * p ], positions[ 3 * p + 1 ], positions[ 3 * p + 2 ], indices, weights, hint );
-			row.fill( 0 );
-			for ( let k = 0; k < 4; k ++ ) {
-
-				const w = weights[ k ];
-				if ( w === 0 ) continue;
-				const source = stride * chosen[ indices[ k ] ];
-				for ( let j = 0; j < stride; j ++ ) row[ j ] += w * table[ source + j ];
-
-			}
-
+			blendRows( table, stride, chosen, indices, weights, row );
 			const e = pointIrradianceError( row, 0, table, stride * p, directions, scale );
 			if ( perPoint ) perPoint[ p ] = e;
 			sum += e;

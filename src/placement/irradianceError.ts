@@ -119,6 +119,34 @@ export function irradianceAtNormals( sh: ArrayLike<number>, normals: ArrayLike<n
 }
 
 /**
+ * One point's predicted row of a per-probe table (e.g. {@link irradianceAtNormals}): the rows of the
+ * probes an interpolator named, blended with its weights — `out = Σ_k weights[k] · row(layout[indices[k]])`,
+ * zero weights skipped. Shared by `reduceProbes` and the experiment's selection, so both predict alike.
+ * @param table `stride` floats per probe of the dense set.
+ * @param layout Dense index of each layout probe (the interpolator's probe k is dense probe `layout[k]`).
+ * @param indices Layout probe indices, as an interpolator wrote them; `weights` the same length.
+ * @param out Receives the row (`stride` floats); returned.
+ */
+export function blendRows(
+	table: ArrayLike<number>, stride: number, layout: ArrayLike<number>,
+	indices: ArrayLike<number>, weights: ArrayLike<number>, out: Float64Array
+): Float64Array {
+
+	out.fill( 0, 0, stride );
+	for ( let k = 0; k < weights.length; k ++ ) {
+
+		const w = weights[ k ];
+		if ( w === 0 ) continue;
+		const source = stride * layout[ indices[ k ] ];
+		for ( let j = 0; j < stride; j ++ ) out[ j ] += w * table[ source + j ];
+
+	}
+
+	return out;
+
+}
+
+/**
  * {@link irradianceError} from irradiance tables (as made by {@link irradianceAtNormals}): the
  * shared arithmetic, so every caller measures the same thing.
  * @param predicted Predicted irradiance table.

@@ -1,8 +1,10 @@
 import { assertFinite, assertInteger, assertNumber, assertPoints, assertSH, assertArrayLike } from '../validate.js';
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import { hilbertIndex3, mulberry32 } from '../tetrahedra/spatialOrder.js';
+import { boundsOf } from '../geometry/boundsOf.js';
 import {
-	IRRADIANCE_ERROR_NORMALS, irradianceAtNormals, irradianceErrorScale, pointIrradianceError, summarizeErrors, type IrradianceErrorSummary,
+	IRRADIANCE_ERROR_NORMALS, blendRows, irradianceAtNormals, irradianceErrorScale, pointIrradianceError, summarizeErrors,
+	type IrradianceErrorSummary,
 } from './irradianceError.js';
 
 /** Options of {@link reduceProbes}. Give `targetCount`, `targetError` or both. */
@@ -208,16 +210,7 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 			if ( sources[ 0 ] === lastSources[ c ] && sources[ 1 ] === lastSources[ c + 1 ] && sources[ 2 ] === lastSources[ c + 2 ] && sources[ 3 ] === lastSources[ c + 3 ] ) continue;
 			lastSources.set( sources, c );
 
-			row.fill( 0 );
-			for ( let k = 0; k < 4; k ++ ) {
-
-				const w = weights[ k ];
-				if ( w === 0 ) continue;
-				const source = tableStride * order[ indices[ k ] ];
-				for ( let j = 0; j < tableStride; j ++ ) row[ j ] += w * truth[ source + j ];
-
-			}
-
+			blendRows( truth, tableStride, order, indices, weights, row );
 			perPoint[ p ] = pointIrradianceError( row, 0, truth, tableStride * p, directions, scale );
 
 		}
@@ -288,14 +281,7 @@ function readKeep( where: string, keep: ArrayLike<number> | undefined, count: nu
 function boxExtremes( points: Float64Array, rank: Uint32Array ): number[] {
 
 	const count = points.length / 3;
-	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let p = 0; p < count; p ++ ) for ( let a = 0; a < 3; a ++ ) {
-
-		const v = points[ 3 * p + a ];
-		if ( v < min[ a ] ) min[ a ] = v;
-		if ( v > max[ a ] ) max[ a ] = v;
-
-	}
+	const { min, max } = boxOf( points );
 
 	const scale = [ 0, 1, 2 ].map( ( a ) => max[ a ] > min[ a ] ? 2 / ( max[ a ] - min[ a ] ) : 0 );
 	const out: number[] = [];
@@ -333,13 +319,7 @@ function boxExtremes( points: Float64Array, rank: Uint32Array ): number[] {
 function completeSpan( where: string, points: Float64Array, rank: Uint32Array, initial: readonly number[] ): number[] {
 
 	const count = points.length / 3;
-	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let p = 0; p < count; p ++ ) for ( let a = 0; a < 3; a ++ ) {
-
-		min[ a ] = Math.min( min[ a ], points[ 3 * p + a ] );
-		max[ a ] = Math.max( max[ a ], points[ 3 * p + a ] );
-
-	}
+	const { min, max } = boxOf( points );
 
 	// Same relative tolerance as the tetrahedralizer's duplicate and planarity tests.
 	const tolerance = 1e-9 * Math.hypot( max[ 0 ] - min[ 0 ], max[ 1 ] - min[ 1 ], max[ 2 ] - min[ 2 ] );
@@ -448,17 +428,19 @@ function seededRanks( count: number, seed: number ): Uint32Array {
 function hilbertOrder( points: Float64Array ): Uint32Array {
 
 	const count = points.length / 3, bits = 10, cells = ( 1 << bits ) - 1;
-	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let p = 0; p < count; p ++ ) for ( let a = 0; a < 3; a ++ ) {
-
-		min[ a ] = Math.min( min[ a ], points[ 3 * p + a ] );
-		max[ a ] = Math.max( max[ a ], points[ 3 * p + a ] );
-
-	}
+	const { min, max } = boxOf( points );
 
 	const cell = ( p: number, a: number ) => max[ a ] > min[ a ] ? Math.round( ( points[ 3 * p + a ] - min[ a ] ) / ( max[ a ] - min[ a ] ) * cells ) : 0;
 	const keys = new Float64Array( count );
 	for ( let p = 0; p < count; p ++ ) keys[ p ] = hilbertIndex3( cell( p, 0 ), cell( p, 1 ), cell( p, 2 ), bits );
 	return Uint32Array.from( { length: count }, ( _, i ) => i ).sort( ( i, j ) => keys[ i ] - keys[ j ] || i - j );
+
+}
+
+/** The points' bounding box as [x, y, z] corners (`boundsOf`). */
+function boxOf( points: Float64Array ): { min: number[]; max: number[] } {
+
+	const b = boundsOf( points );
+	return { min: [ b[ 0 ], b[ 1 ], b[ 2 ] ], max: [ b[ 3 ], b[ 4 ], b[ 5 ] ] };
 
 }
