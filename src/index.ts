@@ -45,7 +45,9 @@ export { reduceProbes } from './placement/reduceProbes.js';
 export type { ReduceProbesOptions, ReduceProbesResult } from './placement/reduceProbes.js';
 
 // Baked volumes inside glTF files.
-export { GLTFLightProbeVolumeExporterPlugin, GLTFLightProbeVolumeLoaderPlugin, GLTF_LIGHT_PROBE_VOLUME_EXTENSION } from './gltf/GLTFLightProbeVolumeExtension.js';
+export { GLTFLightProbeVolumeExporterPlugin } from './gltf/GLTFLightProbeVolumeExporterPlugin.js';
+export { GLTFLightProbeVolumeLoaderPlugin } from './gltf/GLTFLightProbeVolumeLoaderPlugin.js';
+export { GLTF_LIGHT_PROBE_VOLUME_EXTENSION } from './gltf/GLTFLightProbeVolumeExtension.js';
 export type { GLTFLightProbeVolumeEntry } from './gltf/GLTFLightProbeVolumeExtension.js';
 
 // Errors.

@@ -4,7 +4,7 @@ import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader, type GLTF } from 'three/addons/loaders/GLTFLoader.js';
 import {
 	GLTFLightProbeVolumeExporterPlugin, GLTFLightProbeVolumeLoaderPlugin, GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry,
-} from '../../src/gltf/GLTFLightProbeVolumeExtension.js';
+} from '../../src/index.js';
 import { BakedVolumeError, decodeBakedVolume, type BakedVolumeInput } from '../../src/io/index.js';
 import { makeVolume, independentCheck } from './helpers.js';
 

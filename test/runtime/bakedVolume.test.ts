@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import {
-	BakedVolumeError, GridInterpolator, LightProbeVolume, PlanarMesh, TetrahedralMesh, decodeBakedVolume, tetrahedralize,
-} from '../../src/index.js';
+import { BakedVolumeError, LightProbeVolume } from '../../src/index.js';
+import { GridInterpolator, PlanarMesh, TetrahedralMesh, tetrahedralize } from '../../src/math.js';
+import { decodeBakedVolume } from '../../src/format.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /*

@@ -1,6 +1,7 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
-import { LightProbeVolume, ProbeCapturer } from '../../src/index.js';
+import { LightProbeVolume } from '../../src/index.js';
+import { ProbeCapturer } from '../../src/capture.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 
 const ctx = await createHeadlessRenderer( 16, 16 );
