@@ -2,7 +2,7 @@ import * as THREE from 'three';
 import { MTLLoader } from 'three/addons/loaders/MTLLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 
-/** What a scene's `build` needs from the demo (a `DemoApp` is one). */
+/** What a scene's `build` needs from the demo (a `Viewer` is one). */
 export interface SceneHost {
 
 	scene: THREE.Scene;
