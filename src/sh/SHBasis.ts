@@ -58,7 +58,9 @@ export const IRRADIANCE_C5 = 0.247708;
  * @param offset First index written (default 0).
  * @returns `out`.
  */
-export function evaluateSHBasis<T extends { [ index: number ]: number; readonly length: number }>( x: number, y: number, z: number, out: T, offset = 0 ): T {
+export function evaluateSHBasis<T extends { [ index: number ]: number; readonly length: number }>(
+	x: number, y: number, z: number, out: T, offset = 0,
+): T {
 
 	assertNumber( 'evaluateSHBasis', 'x', x );
 	assertNumber( 'evaluateSHBasis', 'y', y );

@@ -31,12 +31,10 @@ export function cubeTexelSolidAngle( column: number, row: number, size: number )
 
 /**
  * The paper's texel solid angle A(ω) ≈ (r·n) / |r|³ · dS with dS = (2/w)(2/h), r the vector from
- * the cube centre to the texel centre on the unit cube (so r·n = 1) and n the face normal — the
- * area of a flat texel, foreshortened and divided by distance². This is the raw value, before the
- * paper's "Step 4: normalisation" (which `projectCubeMapToSH( …, { solidAngle: 'paper' } )` applies
- * by rescaling all weights to sum to 4π). The raw values sum to slightly more than 4π (the
- * midpoint rule overestimates the convex 1/|r|³; +0.38 % at 8², +0.024 % at 32²), reaching 4π only
- * as size → ∞.
+ * the cube centre to the texel centre on the unit cube (so r·n = 1) and n the face normal. This is
+ * the raw value, before the paper's "Step 4: normalisation" (which
+ * `projectCubeMapToSH( …, { solidAngle: 'paper' } )` applies by rescaling all weights to sum to 4π);
+ * the raw values sum to slightly more than 4π (README, "Texel solid angle, paper vs exact").
  * @param column 0..size−1.
  * @param row 0..size−1.
  * @param size Face edge length in texels.

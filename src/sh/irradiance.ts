@@ -36,7 +36,9 @@ const direction = new Float64Array( 3 );
  * @param shOffset Index of the probe's first float in `sh` (default 0).
  * @returns `target`.
  */
-export function evaluateIrradiance<T extends WritableArrayLike = Float32Array>( sh: ArrayLike<number>, normal: DirectionLike, target?: T, shOffset = 0 ): T {
+export function evaluateIrradiance<T extends WritableArrayLike = Float32Array>(
+	sh: ArrayLike<number>, normal: DirectionLike, target?: T, shOffset = 0,
+): T {
 
 	const where = 'evaluateIrradiance';
 	assertSHAt( where, sh, shOffset );
@@ -54,7 +56,9 @@ export function evaluateIrradiance<T extends WritableArrayLike = Float32Array>( 
  * validated once (per-vertex lighting): E(n) for the unit normal (x, y, z) of the probe at
  * `shOffset`, written to `out[ outOffset … outOffset + 2 ]`. Internal (not exported by the package).
  */
-export function irradianceAt( sh: ArrayLike<number>, shOffset: number, x: number, y: number, z: number, out: WritableArrayLike, outOffset: number ): void {
+export function irradianceAt(
+	sh: ArrayLike<number>, shOffset: number, x: number, y: number, z: number, out: WritableArrayLike, outOffset: number,
+): void {
 
 	const c0 = IRRADIANCE_C4;
 	const c1 = 2 * IRRADIANCE_C2 * y;
@@ -77,7 +81,9 @@ export function irradianceAt( sh: ArrayLike<number>, shOffset: number, x: number
  * @param shOffset Index of the probe's first float in `sh` (default 0).
  * @returns `target`.
  */
-export function evaluateRadiance<T extends WritableArrayLike = Float32Array>( sh: ArrayLike<number>, dir: DirectionLike, target?: T, shOffset = 0 ): T {
+export function evaluateRadiance<T extends WritableArrayLike = Float32Array>(
+	sh: ArrayLike<number>, dir: DirectionLike, target?: T, shOffset = 0,
+): T {
 
 	const where = 'evaluateRadiance';
 	assertSHAt( where, sh, shOffset );
@@ -116,7 +122,9 @@ export function evaluateRadiance<T extends WritableArrayLike = Float32Array>( sh
  * @param shOffset Index of the probe's first float in `sh` (default 0), e.g. 27·probeIndex.
  * @returns `out`.
  */
-export function irradianceMatrices<T extends WritableArrayLike = Float32Array>( sh: ArrayLike<number>, out?: T, outOffset = 0, shOffset = 0 ): T {
+export function irradianceMatrices<T extends WritableArrayLike = Float32Array>(
+	sh: ArrayLike<number>, out?: T, outOffset = 0, shOffset = 0,
+): T {
 
 	const where = 'irradianceMatrices';
 	assertSHAt( where, sh, shOffset );
@@ -167,7 +175,9 @@ function assertSHAt( where: string, sh: unknown, shOffset: unknown ): asserts sh
 	assertArrayLike( where, 'sh', sh );
 	if ( sh.length === 0 || sh.length % SH_FLOATS !== 0 ) {
 
-		throw new RangeError( `${where}: sh must have a length that is a positive multiple of 27 (9 RGB coefficients per probe), got ${sh.length}.` );
+		throw new RangeError(
+			`${where}: sh must have a length that is a positive multiple of 27 (9 RGB coefficients per probe), got ${sh.length}.`,
+		);
 
 	}
 
@@ -232,7 +242,11 @@ function assertComponent( where: string, name: string, axis: string, value: unkn
 
 }
 
-function weightedSum( sh: ArrayLike<number>, o: number, c0: number, c1: number, c2: number, c3: number, c4: number, c5: number, c6: number, c7: number, c8: number, out: WritableArrayLike, outOffset = 0 ): void {
+function weightedSum(
+	sh: ArrayLike<number>, o: number,
+	c0: number, c1: number, c2: number, c3: number, c4: number, c5: number, c6: number, c7: number, c8: number,
+	out: WritableArrayLike, outOffset = 0,
+): void {
 
 	for ( let channel = 0; channel < 3; channel ++ ) {
 

@@ -17,10 +17,8 @@ import { LRUCache } from './LRUCache.js';
  *   sum is 4π (the paper names the step but gives no formula).
  * - `'paper-unnormalized'`: the paper's A(ω) without that rescaling (sum slightly above 4π).
  *
- * Measured (test/sh/solidAngleComparison.test.ts): with texel-centre samples, as a GPU capture
- * produces, `'paper'` is about 2× MORE accurate than `'exact'` on smooth environments — it is the
- * midpoint rule of the whole integrand L·Y·J on the face plane, whereas `'exact'` pairs an exact
- * area with a centre-point L·Y. Both are second order; `'paper-unnormalized'` is the worst.
+ * With texel-centre samples (a GPU capture) `'paper'` is the more accurate of the three; how much:
+ * README, "Texel solid angle, paper vs exact" (test/sh/solidAngleComparison.test.ts).
  */
 export type CubeSolidAngleMode = 'exact' | 'paper' | 'paper-unnormalized';
 
@@ -84,7 +82,9 @@ const accumulator = new Float64Array( SH_FLOATS );
  * @param options See {@link CubeMapProjectionOptions}.
  * @returns The 27 SH floats (coefficient-major, RGB interleaved), in `options.target` if given.
  */
-export function projectCubeMapToSH( faces: ArrayLike<ArrayLike<number>>, size: number, options: CubeMapProjectionOptions = {} ): Float32Array {
+export function projectCubeMapToSH(
+	faces: ArrayLike<ArrayLike<number>>, size: number, options: CubeMapProjectionOptions = {},
+): Float32Array {
 
 	const where = 'projectCubeMapToSH';
 	assertInteger( where, 'size', size, 1 );
@@ -110,7 +110,9 @@ export function projectCubeMapToSH( faces: ArrayLike<ArrayLike<number>>, size: n
 		assertArrayLike( where, `faces[${f}]`, face );
 		if ( face.length !== texelCount * channels ) {
 
-			throw new RangeError( `${where}: faces[${f}] must have length size·size·${channels} = ${texelCount * channels} for size ${size}, got ${face.length}.` );
+			throw new RangeError(
+				`${where}: faces[${f}] must have length size·size·${channels} = ${texelCount * channels} for size ${size}, got ${face.length}.`,
+			);
 
 		}
 
@@ -181,7 +183,9 @@ function checkMode( where: string, mode: unknown ): CubeSolidAngleMode {
 	if ( mode === undefined ) return 'exact';
 	if ( ! CUBE_SOLID_ANGLE_MODES.includes( mode as CubeSolidAngleMode ) ) {
 
-		throw new RangeError( `${where}: solidAngle must be one of ${CUBE_SOLID_ANGLE_MODES.map( ( m ) => `'${m}'` ).join( ', ' )}, got ${String( mode )}.` );
+		throw new RangeError(
+			`${where}: solidAngle must be one of ${CUBE_SOLID_ANGLE_MODES.map( ( m ) => `'${m}'` ).join( ', ' )}, got ${String( mode )}.`,
+		);
 
 	}
 

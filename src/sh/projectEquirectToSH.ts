@@ -71,7 +71,9 @@ const basis = new Float64Array( 9 );
  * @param options See {@link EquirectProjectionOptions}.
  * @returns The 27 SH floats (coefficient-major, RGB interleaved), in `options.target` if given.
  */
-export function projectEquirectToSH( pixels: ArrayLike<number>, width: number, height: number, options: EquirectProjectionOptions = {} ): Float32Array {
+export function projectEquirectToSH(
+	pixels: ArrayLike<number>, width: number, height: number, options: EquirectProjectionOptions = {},
+): Float32Array {
 
 	const where = 'projectEquirectToSH';
 	assertInteger( where, 'width', width, 1 );
@@ -93,7 +95,9 @@ export function projectEquirectToSH( pixels: ArrayLike<number>, width: number, h
 	assertArrayLike( where, 'pixels', pixels );
 	if ( pixels.length !== width * height * channels ) {
 
-		throw new RangeError( `${where}: pixels must have length width·height·${channels} = ${width * height * channels} for ${width}×${height}, got ${pixels.length}.` );
+		throw new RangeError(
+			`${where}: pixels must have length width·height·${channels} = ${width * height * channels} for ${width}×${height}, got ${pixels.length}.`,
+		);
 
 	}
 
