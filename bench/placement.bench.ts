@@ -1,0 +1,136 @@
+/**
+ * Probe placement from meshes: placeFromMeshes on a 100k-triangle mesh (gather the world geometry,
+ * candidates from its vertices, TriangleBVH, near-surface and ray-parity classification), and the
+ * classification alone, with its TriangleBVH versus testing every triangle, on a smaller mesh.
+ */
+
+import * as THREE from 'three';
+import { placeFromMeshes } from '../src/placement/placeFromMeshes.js';
+import { candidatesFromVertices } from '../src/placement/candidatesFromVertices.js';
+import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, PARITY_RAY_DIRECTIONS } from '../src/placement/classifyPoints.js';
+import { gatherWorldGeometry } from '../src/geometry/gatherWorldGeometry.js';
+import { closestPointOnTriangle } from '../src/geometry/closestPointOnTriangle.js';
+import { intersectRayTriangle } from '../src/geometry/intersectRayTriangle.js';
+import { timeRuns } from './stats.js';
+import type { BenchRow } from './types.js';
+
+export const title = 'Probe placement from meshes (ms, lower is better)';
+
+export const notes = [
+	'placeFromMeshes: a TorusKnotGeometry( 1, 0.3, 1000, 50 ) mesh (100,000 triangles) with offset 0.1 and minSpacing 0.06 — '
+	+ 'world geometry, vertex candidates, TriangleBVH, then near-surface (minDistance 0.05) and ray-parity classification; '
+	+ 'median / min / max of the runs after warm-up. Check: more than 3,000 candidates kept. Target (printed, not asserted): ≤ 5 s.',
+	'classifyPoints: vertex candidates of a TorusKnotGeometry( 1, 0.3, 100, 20 ) mesh (4,000 triangles) moved 0.1 out, 0.1 in '
+	+ '(inside the tube) and 0.025 out (near the surface), minSpacing 0.06 per set, classified by classifyPoints (its TriangleBVH '
+	+ 'built inside the call) and by a brute-force peer running the same tests (closest point, Möller–Trumbore, 7-ray majority '
+	+ 'vote with the same early stop) on every triangle. Ratio: ours ÷ brute force. Check: the same class for every candidate.',
+];
+
+const OFFSET = 0.1, MIN_SPACING = 0.06, MIN_DISTANCE = OFFSET / 2;
+
+export async function run( log: ( message: string ) => void ): Promise<BenchRow[]> {
+
+	const material = new THREE.MeshBasicMaterial();
+	const rows: BenchRow[] = [];
+
+	log( 'placeFromMeshes, 100k triangles …' );
+	const knot = new THREE.Mesh( new THREE.TorusKnotGeometry( 1, 0.3, 1000, 50 ), material );
+	const triangles = gatherWorldGeometry( knot ).triangles.length / 9;
+	const placed = timeRuns( () => placeFromMeshes( knot, { offset: OFFSET, minSpacing: MIN_SPACING } ), 20, 5000 );
+	const kept = placed.result.length / 3;
+	rows.push( {
+		case: `${triangles.toLocaleString( 'en-US' )} triangles (torus knot)`, subject: 'ours, placeFromMeshes', unit: 'ms', ...placed.summary,
+		output: `${kept.toLocaleString( 'en-US' )} candidates kept`, status: kept > 3000 ? 'valid' : 'too few candidates',
+		targets: [ { text: '≤ 5,000 ms', met: placed.summary.median <= 5000 } ],
+	} );
+	knot.geometry.dispose();
+
+	log( 'classifyPoints vs brute force, 4k triangles …' );
+	const small = gatherWorldGeometry( new THREE.Mesh( new THREE.TorusKnotGeometry( 1, 0.3, 100, 20 ), material ) );
+	// Moved out (open space), in (inside the tube) and barely out (near the surface): every class occurs.
+	const parts = [ OFFSET, - OFFSET, MIN_DISTANCE / 2 ].map( ( offset ) => candidatesFromVertices(
+		small.vertexPositions, small.vertexNormals, { offset, minSpacing: MIN_SPACING }
+	) );
+	const points = new Float64Array( parts.reduce( ( sum, part ) => sum + part.length, 0 ) );
+	parts.reduce( ( at, part ) => { points.set( part, at ); return at + part.length; }, 0 );
+	const name = `${( small.triangles.length / 9 ).toLocaleString( 'en-US' )} triangles (torus knot), `
+		+ `${( points.length / 3 ).toLocaleString( 'en-US' )} candidates`;
+	const ours = timeRuns( () => classifyPoints( points, small.triangles, { minDistance: MIN_DISTANCE } ), 50, 3000 );
+	const brute = timeRuns( () => classifyBruteForce( points, small.triangles, MIN_DISTANCE ), 10, 5000 );
+	const same = ours.result.every( ( c, i ) => c === brute.result[ i ] );
+	rows.push( {
+		case: name, subject: 'ours, classifyPoints (TriangleBVH)', unit: 'ms', ...ours.summary, output: classCounts( ours.result ),
+		status: same ? 'same classes as brute force' : 'DIFFERS from brute force',
+		peer: 'brute force', ratio: ours.summary.median / brute.summary.median,
+	} );
+	rows.push( { case: name, subject: 'brute force (every triangle)', unit: 'ms', ...brute.summary, output: classCounts( brute.result ) } );
+	material.dispose();
+	return rows;
+
+}
+
+/** classifyPoints' tests and vote, run on every triangle instead of a BVH's candidates. */
+function classifyBruteForce( points: Float64Array, triangles: Float64Array, minDistance: number ): Uint8Array {
+
+	const count = points.length / 3, triangleCount = triangles.length / 9, rays = PARITY_RAY_DIRECTIONS.length / 3;
+	const d = PARITY_RAY_DIRECTIONS, r2 = minDistance * minDistance, scratch = new Float64Array( 6 );
+	const classes = new Uint8Array( count );
+	for ( let i = 0; i < count; i ++ ) {
+
+		const x = points[ 3 * i ], y = points[ 3 * i + 1 ], z = points[ 3 * i + 2 ];
+		let near = false;
+		for ( let t = 0; t < triangleCount && ! near; t ++ ) {
+
+			const k = 9 * t;
+			near = closestPointOnTriangle(
+				x, y, z, triangles[ k ], triangles[ k + 1 ], triangles[ k + 2 ], triangles[ k + 3 ], triangles[ k + 4 ], triangles[ k + 5 ],
+				triangles[ k + 6 ], triangles[ k + 7 ], triangles[ k + 8 ], scratch
+			) <= r2;
+
+		}
+
+		if ( near ) {
+
+			classes[ i ] = NEAR_SURFACE;
+			continue;
+
+		}
+
+		let odd = 0;
+		for ( let r = 0; r < rays; r ++ ) {
+
+			let crossings = 0;
+			for ( let t = 0; t < triangleCount; t ++ ) {
+
+				if ( intersectRayTriangle( triangles, t, x, y, z, d[ 3 * r ], d[ 3 * r + 1 ], d[ 3 * r + 2 ] ) > 0 ) crossings ++;
+
+			}
+
+			if ( crossings % 2 === 1 ) odd ++;
+			if ( 2 * odd > rays || 2 * ( r + 1 - odd ) >= rays ) break;
+
+		}
+
+		classes[ i ] = 2 * odd > rays ? INSIDE_GEOMETRY : OPEN_SPACE;
+
+	}
+
+	return classes;
+
+}
+
+/** `'… open, … inside, … near'`. */
+function classCounts( classes: Uint8Array ): string {
+
+	let open = 0, inside = 0, near = 0;
+	for ( const c of classes ) {
+
+		if ( c === OPEN_SPACE ) open ++;
+		else if ( c === INSIDE_GEOMETRY ) inside ++;
+		else near ++;
+
+	}
+
+	return `${open} open, ${inside} inside, ${near} near`;
+
+}
