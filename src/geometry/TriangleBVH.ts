@@ -398,7 +398,9 @@ function nearerOnTop( bounds: Float64Array, stack: Int32Array, top: number, x: n
  * lies exactly on that slab's plane, which the comparisons below treat as inside the slab, and
  * ±Infinity for both ends when o is outside it, which empties the interval.
  */
-export function hitsBox( bounds: Float64Array, b: number, ox: number, oy: number, oz: number, ix: number, iy: number, iz: number, tMax: number ): boolean {
+export function hitsBox(
+	bounds: Float64Array, b: number, ox: number, oy: number, oz: number, ix: number, iy: number, iz: number, tMax: number
+): boolean {
 
 	let near = 0, far = tMax;
 	let t0 = ( bounds[ b ] - ox ) * ix, t1 = ( bounds[ b + 3 ] - ox ) * ix;

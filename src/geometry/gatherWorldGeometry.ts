@@ -70,7 +70,12 @@ export function gatherWorldGeometry( root: Object3D ): WorldGeometry {
 		for ( let copy = 0, copies = instanceCount( mesh ); copy < copies; copy ++ ) {
 
 			_matrix.copy( mesh.matrixWorld );
-			if ( ( mesh as InstancedMesh ).isInstancedMesh === true ) _matrix.multiply( ( mesh as InstancedMesh ).getMatrixAt( copy, _instance ) );
+			if ( ( mesh as InstancedMesh ).isInstancedMesh === true ) {
+
+				_matrix.multiply( ( mesh as InstancedMesh ).getMatrixAt( copy, _instance ) );
+
+			}
+
 			_normalMatrix.getNormalMatrix( _matrix );
 
 			for ( let v = 0; v < position.count; v ++ ) {
@@ -134,8 +139,10 @@ function drawnIndexCount( geometry: BufferGeometry ): number {
 /** Adds the triangle's cross product (twice its area times its normal) to its three vertices. */
 function accumulateFaceNormal( triangles: Float64Array, o: number, normals: Float64Array, vertexBase: number, index: BufferGeometry[ 'index' ], first: number ): void {
 
-	const e1x = triangles[ o + 3 ] - triangles[ o ], e1y = triangles[ o + 4 ] - triangles[ o + 1 ], e1z = triangles[ o + 5 ] - triangles[ o + 2 ];
-	const e2x = triangles[ o + 6 ] - triangles[ o ], e2y = triangles[ o + 7 ] - triangles[ o + 1 ], e2z = triangles[ o + 8 ] - triangles[ o + 2 ];
+	const e1x = triangles[ o + 3 ] - triangles[ o ], e1y = triangles[ o + 4 ] - triangles[ o + 1 ];
+	const e1z = triangles[ o + 5 ] - triangles[ o + 2 ];
+	const e2x = triangles[ o + 6 ] - triangles[ o ], e2y = triangles[ o + 7 ] - triangles[ o + 1 ];
+	const e2z = triangles[ o + 8 ] - triangles[ o + 2 ];
 	const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
 	for ( let corner = 0; corner < 3; corner ++ ) {
 

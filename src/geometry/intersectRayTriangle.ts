@@ -30,7 +30,8 @@ export function intersectRayTriangle(
 	// p = d × e2; det = e1 · p is the (scaled) cosine between the ray and the triangle's plane.
 	const px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
 	const det = e1x * px + e1y * py + e1z * pz;
-	const scale = ( Math.abs( e1x ) + Math.abs( e1y ) + Math.abs( e1z ) ) * ( Math.abs( e2x ) + Math.abs( e2y ) + Math.abs( e2z ) ) * ( Math.abs( dx ) + Math.abs( dy ) + Math.abs( dz ) );
+	const scale = ( Math.abs( e1x ) + Math.abs( e1y ) + Math.abs( e1z ) ) * ( Math.abs( e2x ) + Math.abs( e2y ) + Math.abs( e2z ) )
+		* ( Math.abs( dx ) + Math.abs( dy ) + Math.abs( dz ) );
 	if ( ! ( Math.abs( det ) > PARALLEL_EPSILON * scale ) ) return - 1;
 	const inverse = 1 / det;
 

@@ -36,7 +36,9 @@ export interface CandidatesFromVerticesOptions {
  * @param normals Flat x, y, z per vertex, same length as `positions`; need not be unit length.
  * @returns Flat x, y, z per kept candidate.
  */
-export function candidatesFromVertices( positions: ArrayLike<number>, normals: ArrayLike<number>, options: CandidatesFromVerticesOptions ): Float64Array {
+export function candidatesFromVertices(
+	positions: ArrayLike<number>, normals: ArrayLike<number>, options: CandidatesFromVerticesOptions
+): Float64Array {
 
 	const where = 'candidatesFromVertices';
 	const count = assertPoints( where, 'positions', positions );

@@ -73,7 +73,9 @@ export interface ClassifyPointsOptions {
  * @param scene The triangles, as a {@link TriangleBVH} or a flat array of 9 floats per triangle.
  * @returns One class per point: {@link OPEN_SPACE}, {@link INSIDE_GEOMETRY} or {@link NEAR_SURFACE}.
  */
-export function classifyPoints( points: ArrayLike<number>, scene: TriangleBVH | ArrayLike<number>, options: ClassifyPointsOptions = {} ): Uint8Array {
+export function classifyPoints(
+	points: ArrayLike<number>, scene: TriangleBVH | ArrayLike<number>, options: ClassifyPointsOptions = {}
+): Uint8Array {
 
 	const where = 'classifyPoints';
 	const count = assertPoints( where, 'points', points );

@@ -77,7 +77,9 @@ export interface IrradianceErrorResult extends IrradianceErrorSummary {
  * @param trueSH 27 floats per point, the same count: the captured truth.
  * @param normals Directions, x, y, z each, unit length (default {@link IRRADIANCE_ERROR_NORMALS}).
  */
-export function irradianceError( predictedSH: ArrayLike<number>, trueSH: ArrayLike<number>, normals: ArrayLike<number> = IRRADIANCE_ERROR_NORMALS ): IrradianceErrorResult {
+export function irradianceError(
+	predictedSH: ArrayLike<number>, trueSH: ArrayLike<number>, normals: ArrayLike<number> = IRRADIANCE_ERROR_NORMALS
+): IrradianceErrorResult {
 
 	const where = 'irradianceError';
 	const count = assertSH( where, 'trueSH', trueSH );
@@ -159,7 +161,12 @@ export function irradianceErrorFromTables( predicted: ArrayLike<number>, truth: 
 	const { meanIrradiance, scale } = irradianceErrorScale( truth, directions, where );
 	const count = truth.length / ( 3 * directions );
 	const perPoint = new Float64Array( count );
-	for ( let p = 0; p < count; p ++ ) perPoint[ p ] = pointIrradianceError( predicted, 3 * directions * p, truth, 3 * directions * p, directions, scale );
+	for ( let p = 0; p < count; p ++ ) {
+
+		perPoint[ p ] = pointIrradianceError( predicted, 3 * directions * p, truth, 3 * directions * p, directions, scale );
+
+	}
+
 	return { ...summarizeErrors( perPoint ), perPoint, meanIrradiance };
 
 }
@@ -173,13 +180,16 @@ export function irradianceErrorFromTables( predicted: ArrayLike<number>, truth: 
  * @param directions K, the number of normals.
  * @param scale 1 / (K · mean true irradiance).
  */
-export function pointIrradianceError( predicted: ArrayLike<number>, predictedOffset: number, truth: ArrayLike<number>, truthOffset: number, directions: number, scale: number ): number {
+export function pointIrradianceError(
+	predicted: ArrayLike<number>, predictedOffset: number, truth: ArrayLike<number>, truthOffset: number, directions: number, scale: number
+): number {
 
 	let sum = 0;
 	for ( let k = 0; k < 3 * directions; k += 3 ) {
 
 		const a = predictedOffset + k, b = truthOffset + k;
-		const r = Math.abs( predicted[ a ] - truth[ b ] ), g = Math.abs( predicted[ a + 1 ] - truth[ b + 1 ] ), bl = Math.abs( predicted[ a + 2 ] - truth[ b + 2 ] );
+		const r = Math.abs( predicted[ a ] - truth[ b ] ), g = Math.abs( predicted[ a + 1 ] - truth[ b + 1 ] );
+		const bl = Math.abs( predicted[ a + 2 ] - truth[ b + 2 ] );
 		sum += r > g ? ( r > bl ? r : bl ) : ( g > bl ? g : bl );
 
 	}

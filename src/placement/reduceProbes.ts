@@ -193,7 +193,9 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 		for ( let s = 0; s < size; s ++ ) {
 
 			const i = order[ s ];
-			subsetPositions[ 3 * s ] = points[ 3 * i ]; subsetPositions[ 3 * s + 1 ] = points[ 3 * i + 1 ]; subsetPositions[ 3 * s + 2 ] = points[ 3 * i + 2 ];
+			subsetPositions[ 3 * s ] = points[ 3 * i ];
+			subsetPositions[ 3 * s + 1 ] = points[ 3 * i + 1 ];
+			subsetPositions[ 3 * s + 2 ] = points[ 3 * i + 2 ];
 
 		}
 
@@ -207,7 +209,8 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 			for ( let k = 0; k < 4; k ++ ) sources[ k ] = weights[ k ] === 0 ? 0xFFFFFFFE : order[ indices[ k ] ];
 			sources.sort();
 			const c = 4 * p;
-			if ( sources[ 0 ] === lastSources[ c ] && sources[ 1 ] === lastSources[ c + 1 ] && sources[ 2 ] === lastSources[ c + 2 ] && sources[ 3 ] === lastSources[ c + 3 ] ) continue;
+			if ( sources[ 0 ] === lastSources[ c ] && sources[ 1 ] === lastSources[ c + 1 ]
+				&& sources[ 2 ] === lastSources[ c + 2 ] && sources[ 3 ] === lastSources[ c + 3 ] ) continue;
 			lastSources.set( sources, c );
 
 			blendRows( truth, tableStride, order, indices, weights, row );
@@ -250,7 +253,10 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 		order: chosen,
 		error: summary,
 		perPoint,
-		history: { count: Uint32Array.from( historyCount ), mean: Float64Array.from( historyMean ), p95: Float64Array.from( historyP95 ), max: Float64Array.from( historyMax ) },
+		history: {
+			count: Uint32Array.from( historyCount ), mean: Float64Array.from( historyMean ),
+			p95: Float64Array.from( historyP95 ), max: Float64Array.from( historyMax ),
+		},
 	};
 
 }
@@ -291,7 +297,8 @@ function boxExtremes( points: Float64Array, rank: Uint32Array ): number[] {
 		let best = - 1, bestValue = - Infinity;
 		for ( let p = 0; p < count; p ++ ) {
 
-			const value = sx * ( points[ 3 * p ] - min[ 0 ] ) * scale[ 0 ] + sy * ( points[ 3 * p + 1 ] - min[ 1 ] ) * scale[ 1 ] + sz * ( points[ 3 * p + 2 ] - min[ 2 ] ) * scale[ 2 ];
+			const value = sx * ( points[ 3 * p ] - min[ 0 ] ) * scale[ 0 ] + sy * ( points[ 3 * p + 1 ] - min[ 1 ] ) * scale[ 1 ]
+				+ sz * ( points[ 3 * p + 2 ] - min[ 2 ] ) * scale[ 2 ];
 			if ( value > bestValue || ( value === bestValue && rank[ p ] < rank[ best ] ) ) {
 
 				best = p;
@@ -330,7 +337,12 @@ function completeSpan( where: string, points: Float64Array, rank: Uint32Array, i
 	const basis: number[][] = [];
 	const distanceFromHull = ( p: number ): number => {
 
-		if ( origin === null ) return Math.hypot( points[ 3 * p ] - centre[ 0 ], points[ 3 * p + 1 ] - centre[ 1 ], points[ 3 * p + 2 ] - centre[ 2 ] );
+		if ( origin === null ) {
+
+			return Math.hypot( points[ 3 * p ] - centre[ 0 ], points[ 3 * p + 1 ] - centre[ 1 ], points[ 3 * p + 2 ] - centre[ 2 ] );
+
+		}
+
 		const d = [ points[ 3 * p ] - origin[ 0 ], points[ 3 * p + 1 ] - origin[ 1 ], points[ 3 * p + 2 ] - origin[ 2 ] ];
 		for ( const u of basis ) {
 
@@ -430,7 +442,8 @@ function hilbertOrder( points: Float64Array ): Uint32Array {
 	const count = points.length / 3, bits = 10, cells = ( 1 << bits ) - 1;
 	const { min, max } = boxOf( points );
 
-	const cell = ( p: number, a: number ) => max[ a ] > min[ a ] ? Math.round( ( points[ 3 * p + a ] - min[ a ] ) / ( max[ a ] - min[ a ] ) * cells ) : 0;
+	const cell = ( p: number, a: number ) => max[ a ] > min[ a ]
+		? Math.round( ( points[ 3 * p + a ] - min[ a ] ) / ( max[ a ] - min[ a ] ) * cells ) : 0;
 	const keys = new Float64Array( count );
 	for ( let p = 0; p < count; p ++ ) keys[ p ] = hilbertIndex3( cell( p, 0 ), cell( p, 1 ), cell( p, 2 ), bits );
 	return Uint32Array.from( { length: count }, ( _, i ) => i ).sort( ( i, j ) => keys[ i ] - keys[ j ] || i - j );

@@ -29,7 +29,13 @@ function sourcesOf( candidates: Float64Array, positions: Float64Array, normals: 
 
 			const length = Math.hypot( normals[ 3 * v ], normals[ 3 * v + 1 ], normals[ 3 * v + 2 ] );
 			let distance = 0;
-			for ( let a = 0; a < 3; a ++ ) distance = Math.max( distance, Math.abs( positions[ 3 * v + a ] + offset * normals[ 3 * v + a ] / length - candidates[ 3 * c + a ] ) );
+			for ( let a = 0; a < 3; a ++ ) {
+
+				const expected = positions[ 3 * v + a ] + offset * normals[ 3 * v + a ] / length;
+				distance = Math.max( distance, Math.abs( expected - candidates[ 3 * c + a ] ) );
+
+			}
+
 			if ( distance < 1e-12 ) found = v;
 
 		}
@@ -64,7 +70,10 @@ describe( 'candidatesFromVertices (paper 2.1: probes from the background mesh\'s
 		let closest = Infinity;
 		for ( let i = 0; i < count; i ++ ) for ( let j = i + 1; j < count; j ++ ) {
 
-			closest = Math.min( closest, Math.hypot( candidates[ 3 * i ] - candidates[ 3 * j ], candidates[ 3 * i + 1 ] - candidates[ 3 * j + 1 ], candidates[ 3 * i + 2 ] - candidates[ 3 * j + 2 ] ) );
+			closest = Math.min( closest, Math.hypot(
+				candidates[ 3 * i ] - candidates[ 3 * j ], candidates[ 3 * i + 1 ] - candidates[ 3 * j + 1 ],
+				candidates[ 3 * i + 2 ] - candidates[ 3 * j + 2 ]
+			) );
 
 		}
 
@@ -84,7 +93,13 @@ describe( 'candidatesFromVertices (paper 2.1: probes from the background mesh\'s
 			const y = positions[ 3 * v + 1 ] + offset * normals[ 3 * v + 1 ] / length;
 			const z = positions[ 3 * v + 2 ] + offset * normals[ 3 * v + 2 ] / length;
 			let nearest = Infinity;
-			for ( let c = 0; c < count; c ++ ) nearest = Math.min( nearest, Math.hypot( candidates[ 3 * c ] - x, candidates[ 3 * c + 1 ] - y, candidates[ 3 * c + 2 ] - z ) );
+			for ( let c = 0; c < count; c ++ ) {
+
+				const gap = Math.hypot( candidates[ 3 * c ] - x, candidates[ 3 * c + 1 ] - y, candidates[ 3 * c + 2 ] - z );
+				nearest = Math.min( nearest, gap );
+
+			}
+
 			worst = Math.max( worst, nearest );
 
 		}
@@ -109,7 +124,8 @@ describe( 'candidatesFromVertices (paper 2.1: probes from the background mesh\'s
 		const out = candidatesFromVertices( shifted, normals, { offset: 0.001, minSpacing: 0.002 } );
 		for ( let i = 0; i < out.length / 3; i ++ ) for ( let j = i + 1; j < out.length / 3; j ++ ) {
 
-			expect( Math.hypot( out[ 3 * i ] - out[ 3 * j ], out[ 3 * i + 1 ] - out[ 3 * j + 1 ], out[ 3 * i + 2 ] - out[ 3 * j + 2 ] ) ).toBeGreaterThanOrEqual( 0.002 );
+			const gap = Math.hypot( out[ 3 * i ] - out[ 3 * j ], out[ 3 * i + 1 ] - out[ 3 * j + 1 ], out[ 3 * i + 2 ] - out[ 3 * j + 2 ] );
+			expect( gap ).toBeGreaterThanOrEqual( 0.002 );
 
 		}
 

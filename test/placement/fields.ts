@@ -49,7 +49,12 @@ export function bumpField( x: number, y: number, z: number, out: Float32Array | 
 export function sampleField( field: typeof linearField, positions: Float64Array ): Float32Array {
 
 	const sh = new Float32Array( 9 * positions.length );
-	for ( let p = 0; p < positions.length / 3; p ++ ) field( positions[ 3 * p ], positions[ 3 * p + 1 ], positions[ 3 * p + 2 ], sh, 27 * p );
+	for ( let p = 0; p < positions.length / 3; p ++ ) {
+
+		field( positions[ 3 * p ], positions[ 3 * p + 1 ], positions[ 3 * p + 2 ], sh, 27 * p );
+
+	}
+
 	return sh;
 
 }

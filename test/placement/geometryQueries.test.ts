@@ -32,11 +32,14 @@ function randomTriangles( n: number, seed: number ): Float64Array {
 /** Ray–plane intersection and barycentric coordinates by Cramer's rule: a different derivation from Möller–Trumbore. */
 function referenceHit( tri: Float64Array, t: number, o: number[], d: number[] ): { t: number; u: number; v: number } {
 
-	const a = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + i ] ), b = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + 3 + i ] ), c = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + 6 + i ] );
+	const a = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + i ] ), b = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + 3 + i ] );
+	const c = [ 0, 1, 2 ].map( ( i ) => tri[ 9 * t + 6 + i ] );
 	// Solve o + s d = a + u (b − a) + v (c − a) for (s, u, v): columns [−d, b − a, c − a].
 	const m = [ 0, 1, 2 ].map( ( i ) => [ - d[ i ], b[ i ] - a[ i ], c[ i ] - a[ i ] ] );
 	const r = [ 0, 1, 2 ].map( ( i ) => o[ i ] - a[ i ] );
-	const det3 = ( q: number[][] ) => q[ 0 ][ 0 ] * ( q[ 1 ][ 1 ] * q[ 2 ][ 2 ] - q[ 1 ][ 2 ] * q[ 2 ][ 1 ] ) - q[ 0 ][ 1 ] * ( q[ 1 ][ 0 ] * q[ 2 ][ 2 ] - q[ 1 ][ 2 ] * q[ 2 ][ 0 ] ) + q[ 0 ][ 2 ] * ( q[ 1 ][ 0 ] * q[ 2 ][ 1 ] - q[ 1 ][ 1 ] * q[ 2 ][ 0 ] );
+	const det3 = ( q: number[][] ) => q[ 0 ][ 0 ] * ( q[ 1 ][ 1 ] * q[ 2 ][ 2 ] - q[ 1 ][ 2 ] * q[ 2 ][ 1 ] )
+		- q[ 0 ][ 1 ] * ( q[ 1 ][ 0 ] * q[ 2 ][ 2 ] - q[ 1 ][ 2 ] * q[ 2 ][ 0 ] )
+		+ q[ 0 ][ 2 ] * ( q[ 1 ][ 0 ] * q[ 2 ][ 1 ] - q[ 1 ][ 1 ] * q[ 2 ][ 0 ] );
 	const det = det3( m );
 	const column = ( k: number ) => m.map( ( row, i ) => row.map( ( value, j ) => j === k ? r[ i ] : value ) );
 	return { t: det3( column( 0 ) ) / det, u: det3( column( 1 ) ) / det, v: det3( column( 2 ) ) / det };
@@ -68,7 +71,17 @@ describe( 'intersectRayTriangle (Möller–Trumbore)', () => {
 
 			const o = [ random(), random(), random() ], d = [ random() - 0.5, random() - 0.5, random() - 0.5 ];
 			// Aim about half the rays at the triangle's centroid so both outcomes are well represented.
-			if ( t % 2 === 0 ) for ( let i = 0; i < 3; i ++ ) d[ i ] = ( triangles[ 9 * t + i ] + triangles[ 9 * t + 3 + i ] + triangles[ 9 * t + 6 + i ] ) / 3 - o[ i ] + 0.03 * ( random() - 0.5 );
+			if ( t % 2 === 0 ) {
+
+				for ( let i = 0; i < 3; i ++ ) {
+
+					const centroid = ( triangles[ 9 * t + i ] + triangles[ 9 * t + 3 + i ] + triangles[ 9 * t + 6 + i ] ) / 3;
+					d[ i ] = centroid - o[ i ] + 0.03 * ( random() - 0.5 );
+
+				}
+
+			}
+
 			const reference = referenceHit( triangles, t, o, d );
 			const margin = Math.min( reference.u, reference.v, 1 - reference.u - reference.v, reference.t );
 			if ( Math.abs( margin ) < 1e-9 ) continue; // on an edge: either answer is right
@@ -107,7 +120,12 @@ describe( 'TriangleBVH', () => {
 			const d = [ random() - 0.5, random() - 0.5, random() - 0.5 ];
 			if ( r % 10 === 0 ) { d[ 0 ] = 0; d[ 1 ] = 0; } // axis-parallel rays: zero reciprocal directions
 			let brute = 0;
-			for ( let t = 0; t < 5000; t ++ ) if ( intersectRayTriangle( triangles, t, o[ 0 ], o[ 1 ], o[ 2 ], d[ 0 ], d[ 1 ], d[ 2 ] ) > 0 ) brute ++;
+			for ( let t = 0; t < 5000; t ++ ) {
+
+				if ( intersectRayTriangle( triangles, t, o[ 0 ], o[ 1 ], o[ 2 ], d[ 0 ], d[ 1 ], d[ 2 ] ) > 0 ) brute ++;
+
+			}
+
 			expect( bvh.countCrossings( o[ 0 ], o[ 1 ], o[ 2 ], d[ 0 ], d[ 1 ], d[ 2 ] ) ).toBe( brute );
 
 		}
@@ -124,7 +142,10 @@ describe( 'TriangleBVH', () => {
 			for ( let t = 0; t < 5000; t ++ ) {
 
 				const k = 9 * t;
-				nearest = Math.min( nearest, closestPointOnTriangle( x, y, z, triangles[ k ], triangles[ k + 1 ], triangles[ k + 2 ], triangles[ k + 3 ], triangles[ k + 4 ], triangles[ k + 5 ], triangles[ k + 6 ], triangles[ k + 7 ], triangles[ k + 8 ], scratch ) );
+				nearest = Math.min( nearest, closestPointOnTriangle(
+					x, y, z, triangles[ k ], triangles[ k + 1 ], triangles[ k + 2 ], triangles[ k + 3 ], triangles[ k + 4 ],
+					triangles[ k + 5 ], triangles[ k + 6 ], triangles[ k + 7 ], triangles[ k + 8 ], scratch
+				) );
 
 			}
 
@@ -278,7 +299,11 @@ describe( 'classifyPoints (inside by majority of ray parities, near a surface by
 			const d = Array.from( PARITY_RAY_DIRECTIONS.subarray( 3 * r, 3 * r + 3 ) );
 			expect( Math.hypot( ...d ) ).toBeCloseTo( 1, 12 );
 			for ( const c of d ) expect( Math.abs( c ) ).toBeGreaterThan( 0.02 );
-			for ( const [ i, j ] of [ [ 0, 1 ], [ 1, 2 ], [ 0, 2 ] ] ) expect( Math.abs( Math.abs( d[ i ] ) - Math.abs( d[ j ] ) ) ).toBeGreaterThan( 0.02 );
+			for ( const [ i, j ] of [ [ 0, 1 ], [ 1, 2 ], [ 0, 2 ] ] ) {
+
+				expect( Math.abs( Math.abs( d[ i ] ) - Math.abs( d[ j ] ) ) ).toBeGreaterThan( 0.02 );
+
+			}
 
 		}
 

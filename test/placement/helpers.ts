@@ -30,7 +30,9 @@ export function torusDistance( x: number, y: number, z: number, cx: number, cy: 
 }
 
 /** Signed distance to an axis-aligned box given by centre and half sizes (negative inside). */
-export function boxDistance( x: number, y: number, z: number, cx: number, cy: number, cz: number, hx: number, hy: number, hz: number ): number {
+export function boxDistance(
+	x: number, y: number, z: number, cx: number, cy: number, cz: number, hx: number, hy: number, hz: number
+): number {
 
 	const qx = Math.abs( x - cx ) - hx, qy = Math.abs( y - cy ) - hy, qz = Math.abs( z - cz ) - hz;
 	const outside = Math.hypot( Math.max( qx, 0 ), Math.max( qy, 0 ), Math.max( qz, 0 ) );

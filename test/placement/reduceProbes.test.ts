@@ -77,7 +77,8 @@ describe( 'reduceProbes (paper 3.4: a dense grid turned into an arbitrary layout
 		// Barycentric weights reproduce linear functions exactly, and the 8 corners' hull is the
 		// whole grid: nothing is left to insert. Error is float32 rounding of the stored SH.
 		const result = reduceProbes( grid, linearSH, { targetError: 1e-5 } );
-		const corners = [ 0, 9 ].flatMap( ( k ) => [ 0, 9 ].flatMap( ( j ) => [ 0, 9 ].map( ( i ) => gridIndex( i, j, k, 10 ) ) ) ).sort( ( a, b ) => a - b );
+		const corners = [ 0, 9 ].flatMap( ( k ) => [ 0, 9 ].flatMap( ( j ) => [ 0, 9 ].map( ( i ) => gridIndex( i, j, k, 10 ) ) ) )
+			.sort( ( a, b ) => a - b );
 		expect( Array.from( result.keep ) ).toEqual( corners );
 		expect( result.error.max ).toBeLessThan( 1e-6 );
 		expect( measuredError( grid, linearSH, result.keep ).max ).toBeLessThan( 1e-6 );
@@ -136,7 +137,9 @@ describe( 'reduceProbes (paper 3.4: a dense grid turned into an arbitrary layout
 		// (σ = 0.12 around BUMP_CENTRE) needs more probes. 7.7 % of the grid lies within 0.3 of its
 		// centre; uniform placement would put that share of the subset there.
 		const result = reduceBump( 0.005 );
-		const near = ( i: number ) => Math.hypot( grid[ 3 * i ] - BUMP_CENTRE[ 0 ], grid[ 3 * i + 1 ] - BUMP_CENTRE[ 1 ], grid[ 3 * i + 2 ] - BUMP_CENTRE[ 2 ] ) < 0.3;
+		const near = ( i: number ) => Math.hypot(
+			grid[ 3 * i ] - BUMP_CENTRE[ 0 ], grid[ 3 * i + 1 ] - BUMP_CENTRE[ 1 ], grid[ 3 * i + 2 ] - BUMP_CENTRE[ 2 ]
+		) < 0.3;
 		let denseNear = 0;
 		for ( let i = 0; i < 1000; i ++ ) if ( near( i ) ) denseNear ++;
 		const keptNear = Array.from( result.keep ).filter( near ).length;
@@ -173,7 +176,8 @@ describe( 'reduceProbes (paper 3.4: a dense grid turned into an arbitrary layout
 
 	it( 'reduces a flat layout (one floor of probes) through the planar fallback', () => {
 
-		const floor = placeGrid( [ 0, 0.3, 0 ], [ 1, 0.3001, 1 ], [ 12, 2, 12 ] ).filter( ( _, i ) => Math.floor( i / 36 ) % 2 === 0 ); // the y = 0.3 layer
+		// The y = 0.3 layer.
+		const floor = placeGrid( [ 0, 0.3, 0 ], [ 1, 0.3001, 1 ], [ 12, 2, 12 ] ).filter( ( _, i ) => Math.floor( i / 36 ) % 2 === 0 );
 		expect( floor.length ).toBe( 3 * 144 );
 		const sh = sampleField( bumpField, floor );
 		const result = reduceProbes( floor, sh, { targetError: 0.005 } );

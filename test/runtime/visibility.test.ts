@@ -18,8 +18,10 @@ import { seededRandom } from '../helpers/pointSets.js';
 /** Signed volume of (b − a, c − a, d − a), ×6. */
 function orient( a: number[], b: number[], c: number[], d: number[] ): number {
 
-	const u = [ 0, 1, 2 ].map( ( i ) => b[ i ] - a[ i ] ), v = [ 0, 1, 2 ].map( ( i ) => c[ i ] - a[ i ] ), w = [ 0, 1, 2 ].map( ( i ) => d[ i ] - a[ i ] );
-	return u[ 0 ] * ( v[ 1 ] * w[ 2 ] - v[ 2 ] * w[ 1 ] ) - u[ 1 ] * ( v[ 0 ] * w[ 2 ] - v[ 2 ] * w[ 0 ] ) + u[ 2 ] * ( v[ 0 ] * w[ 1 ] - v[ 1 ] * w[ 0 ] );
+	const u = [ 0, 1, 2 ].map( ( i ) => b[ i ] - a[ i ] ), v = [ 0, 1, 2 ].map( ( i ) => c[ i ] - a[ i ] );
+	const w = [ 0, 1, 2 ].map( ( i ) => d[ i ] - a[ i ] );
+	return u[ 0 ] * ( v[ 1 ] * w[ 2 ] - v[ 2 ] * w[ 1 ] ) - u[ 1 ] * ( v[ 0 ] * w[ 2 ] - v[ 2 ] * w[ 0 ] )
+		+ u[ 2 ] * ( v[ 0 ] * w[ 1 ] - v[ 1 ] * w[ 0 ] );
 
 }
 
@@ -39,7 +41,10 @@ function wallAt( x: number, size = 10 ): Float64Array {
 
 }
 
-/** A probe grid x ∈ {−2, −1, 1, 2} (two layers each side of x = 0), y, z ∈ {0, 2}; SH: L00 red = 1 for x < 0, L00 blue = 1 for x > 0, L00 green = the probe's index + 1. */
+/**
+ * A probe grid x ∈ {−2, −1, 1, 2} (two layers each side of x = 0), y, z ∈ {0, 2}; SH: L00 red = 1 for x < 0,
+ * L00 blue = 1 for x > 0, L00 green = the probe's index + 1.
+ */
 function sidedProbes() {
 
 	const positions: number[] = [];
@@ -81,12 +86,18 @@ describe( 'VisibilityGuard.segmentBlocked', () => {
 		for ( let t = 0; t < 300; t ++ ) {
 
 			const c = [ random(), random(), random() ];
-			for ( let v = 0; v < 3; v ++ ) for ( let a = 0; a < 3; a ++ ) triangles[ 9 * t + 3 * v + a ] = c[ a ] + 0.15 * ( random() - 0.5 );
+			for ( let v = 0; v < 3; v ++ ) {
+
+				for ( let a = 0; a < 3; a ++ ) triangles[ 9 * t + 3 * v + a ] = c[ a ] + 0.15 * ( random() - 0.5 );
+
+			}
 
 		}
 
 		const guard = new VisibilityGuard( triangles );
-		const vertices = Array.from( { length: 300 }, ( _, t ) => [ 0, 1, 2 ].map( ( v ) => [ 0, 1, 2 ].map( ( a ) => triangles[ 9 * t + 3 * v + a ] ) ) );
+		const vertices = Array.from(
+			{ length: 300 }, ( _, t ) => [ 0, 1, 2 ].map( ( v ) => [ 0, 1, 2 ].map( ( a ) => triangles[ 9 * t + 3 * v + a ] ) )
+		);
 		const tri = ( t: number, v: number ) => vertices[ t ][ v ];
 		let blocked = 0;
 		for ( let s = 0; s < 1000; s ++ ) {
@@ -113,7 +124,8 @@ describe( 'VisibilityGuard.segmentBlocked', () => {
 		expect( guard.segmentBlocked( 0.5, 0, 0, 3, 1, 1 ) ).toBe( false );
 		expect( guard.segmentBlocked( - 1, 0, 0, - 1, 3, 0 ) ).toBe( false ); // parallel, beside it
 		expect( guard.segmentBlocked( - 1, 0, 0, 0, 0, 0 ) ).toBe( false ); // ends on it
-		expect( guard.segmentBlocked( - 1, 0, 0, 1, 30, 0 ) ).toBe( false ); // passes beyond its edge (y = 15 at x = 0; the wall ends at 10)
+		// Passes beyond its edge (y = 15 at x = 0; the wall ends at 10).
+		expect( guard.segmentBlocked( - 1, 0, 0, 1, 30, 0 ) ).toBe( false );
 		expect( guard.segmentBlocked( 1, 1, 1, 1, 1, 1 ) ).toBe( false ); // a point
 		expect( new VisibilityGuard( [] ).segmentBlocked( - 1, 0, 0, 1, 0, 0 ) ).toBe( false );
 
@@ -260,7 +272,8 @@ describe( 'LightProbeVolume with occluders', () => {
 		const sample = volume.sample( [ 0.2, 1, 1 ] );
 		expect( sample[ 0 ] ).toBe( 0 );
 		expect( sample[ 2 ] ).toBeCloseTo( 1, 6 );
-		expect( new LightProbeVolume( { positions: grid.positions, sh, interpolator: grid } ).sample( [ 0.2, 1, 1 ] )[ 0 ] ).toBeCloseTo( 0.4, 6 );
+		const plain = new LightProbeVolume( { positions: grid.positions, sh, interpolator: grid } );
+		expect( plain.sample( [ 0.2, 1, 1 ] )[ 0 ] ).toBeCloseTo( 0.4, 6 );
 
 	} );
 
