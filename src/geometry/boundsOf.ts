@@ -4,7 +4,9 @@
  * Writes `[ minX, minY, minZ, maxX, maxY, maxZ ]` into `target` (a new `Float64Array(6)` by
  * default) over the first `count` points; with no points the bounds are empty (min = +∞, max = −∞).
  */
-export function boundsOf( positions: ArrayLike<number>, count = Math.floor( positions.length / 3 ), target: Float64Array | number[] = new Float64Array( 6 ) ): Float64Array | number[] {
+export function boundsOf(
+	positions: ArrayLike<number>, count = Math.floor( positions.length / 3 ), target: Float64Array | number[] = new Float64Array( 6 ),
+): Float64Array | number[] {
 
 	let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
 	for ( let i = 0; i < count; i ++ ) {
