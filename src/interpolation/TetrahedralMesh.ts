@@ -1,9 +1,11 @@
 import { assertArrayLike, assertInteger, assertNumber, assertOutput, assertPoints } from '../validate.js';
 import { tetrahedralize, type TetrahedralizeOptions } from '../tetrahedra/tetrahedralize.js';
-import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
+import type { validateTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
 import { closestPointOnTriangle } from '../geometry/closestPointOnTriangle.js';
+import { exactBarycentric } from './exactBarycentric.js';
+import { walkExactly } from './exactWalk.js';
 import type { OuterCells } from './OuterCells.js';
-import { buildMeshParts, type TetrahedralMeshParts } from './tetrahedralMeshParts.js';
+import { buildMeshParts, storedTetrahedralization, type TetrahedralMeshParts } from './tetrahedralMeshParts.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 /**
@@ -48,6 +50,7 @@ const INSIDE_EPSILON = 1e-12;
 const _weights = new Float64Array( 4 );
 const _closest = new Float64Array( 6 );
 const _outer = new Float64Array( 4 );
+const _exit = new Int32Array( 2 );
 
 const FROM = 'TetrahedralMesh.fromTetrahedralization';
 
@@ -105,6 +108,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	/**
 	 * Per tetrahedron, the row-major inverse of [p0 − p3, p1 − p3, p2 − p3] (9 floats), so that
 	 * (w0, w1, w2) = inverse · (p − p3) and w3 = 1 − w0 − w1 − w2 (paper eq. in section 2.4).
+	 * Nine NaN for a tetrahedron too flat in floating point for its inverse (`isIllConditioned`):
+	 * its weights come from exact sub-volumes instead.
 	 */
 	inverseMatrices: Float64Array;
 
@@ -191,9 +196,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		if ( tetrahedra.length === 0 || tetrahedra.length % 4 !== 0 ) throw new RangeError( `${FROM}: tetrahedra must hold 4 indices per tetrahedron (a positive multiple of 4), got length ${tetrahedra.length}.` );
 		if ( neighbors.length !== tetrahedra.length ) throw new RangeError( `${FROM}: neighbors must have one entry per tetrahedron face (length ${tetrahedra.length}), got length ${neighbors.length}.` );
 		const p = Float64Array.from( positions );
-		const { tetrahedra: tets, neighbors: adjacent } = options.trusted === true
-			? { tetrahedra: toUint32( tetrahedra ), neighbors: toInt32( neighbors ) }
-			: validated( p, tetrahedra, neighbors );
+		const { tetrahedra: tets, neighbors: adjacent } =
+			storedTetrahedralization( FROM, p, tetrahedra, neighbors, options.trusted === true );
 		const duplicates = options.duplicates ? Uint32Array.from( options.duplicates ) : new Uint32Array( 0 );
 		return new TetrahedralMesh( p, { outside: options.outside }, buildMeshParts( FROM, p, tets, adjacent, duplicates ) );
 
@@ -226,7 +230,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * Finds the tetrahedron containing (x, y, z) by walking from `hint` towards the point, stepping
 	 * each time across the face with the most negative barycentric weight. In a Delaunay mesh that
 	 * walk cannot cycle in exact arithmetic; a step budget guards against rounding, after which a
-	 * full scan answers.
+	 * full scan answers. In ill-conditioned tetrahedra (and wherever a weight is not finite) exact
+	 * sub-volumes decide: a NaN is never read as a step.
 	 * @param hint A tetrahedron near the point (e.g. last frame's), a hint returned by
 	 * {@link TetrahedralMesh.interpolate} (an outer cell starts from its hull face's tetrahedron), or −1.
 	 * @returns The tetrahedron index, or −1 when the point is outside the convex hull.
@@ -237,7 +242,8 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		let t = hint >= 0 && hint < count ? hint | 0 : 0;
 		if ( hint >= count && hint - count < this.hullFaceTetrahedra.length ) t = this.hullFaceTetrahedra[ hint - count ];
 		const neighbors = this.neighbors, m = this.inverseMatrices, p = this.positions, tetrahedra = this.tetrahedra;
-		for ( let steps = 0; steps <= count; steps ++ ) {
+		let steps = 0;
+		for ( ; steps <= count; steps ++ ) {
 
 			// Barycentric weights inline (this is the per-object, per-frame hot loop); they are left
 			// in _weights for interpolate().
@@ -253,12 +259,25 @@ export class TetrahedralMesh implements ProbeInterpolator {
 			if ( w1 < worstValue ) { worstValue = w1; worst = 1; }
 			if ( w2 < worstValue ) { worstValue = w2; worst = 2; }
 			if ( w3 < worstValue ) { worstValue = w3; worst = 3; }
-			if ( worstValue >= - INSIDE_EPSILON ) return t;
+			// w3 is NaN whenever a weight is (or two overflowed with opposite signs).
+			if ( worstValue >= - INSIDE_EPSILON && w3 === w3 ) return t;
+			// A NaN: the walk stops (and goes on below).
+			if ( ! ( worstValue < - INSIDE_EPSILON ) ) break;
 			const next = neighbors[ 4 * t + worst ];
 			// Beyond a hull face's plane means outside the (convex) hull; remember the face for the
 			// outer-cell walk.
 			if ( next === - 1 ) { this.exitTetrahedron = t; this.exitSlot = worst; return - 1; }
 			t = next;
+
+		}
+
+		if ( steps <= count ) {
+
+			// A NaN — the sentinel of an ill-conditioned cell, or an overflow — is never read as a
+			// step: the walk goes on with exact sub-volumes where the float weights fail.
+			const found = walkExactly( p, tetrahedra, neighbors, m, x, y, z, t, count - steps, INSIDE_EPSILON, _weights, _exit );
+			if ( found === - 1 ) { this.exitTetrahedron = _exit[ 0 ]; this.exitSlot = _exit[ 1 ]; }
+			if ( found !== - 2 ) return found;
 
 		}
 
@@ -283,11 +302,20 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 	/**
 	 * Writes the barycentric coordinates of (x, y, z) in tetrahedron t: `out[k]` is the weight of
-	 * probe `tetrahedra[4t + k]`. Negative entries mean the point is outside t.
+	 * probe `tetrahedra[4t + k]`. Negative entries mean the point is outside t. From the inverse
+	 * matrix, or from exact sub-volumes where it is ill-conditioned.
 	 */
 	barycentric<T extends Float32Array | Float64Array | number[]>( t: number, x: number, y: number, z: number, out: T ): T {
 
 		const m = this.inverseMatrices, k = 9 * t;
+		// The NaN sentinel of an ill-conditioned tetrahedron (see inverseMatrices).
+		if ( m[ k ] !== m[ k ] ) {
+
+			exactBarycentric( this.positions, this.tetrahedra, t, x, y, z, out );
+			return out;
+
+		}
+
 		const r = 3 * this.tetrahedra[ 4 * t + 3 ], p = this.positions;
 		const dx = x - p[ r ], dy = y - p[ r + 1 ], dz = z - p[ r + 2 ];
 		const a = m[ k ] * dx + m[ k + 1 ] * dy + m[ k + 2 ] * dz;
@@ -354,10 +382,13 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		}
 
 		const f = this.outerCells.locate( x, y, z, face, _outer );
-		if ( f < 0 ) return this.interpolateNearestFace( x, y, z, indices, weights, true );
+		const u0 = _outer[ 1 ], u1 = _outer[ 2 ], u2 = _outer[ 3 ];
+		// No outer cell reaches the point, or (guarding the final weights: finite, ≥ 0, summing to
+		// 1) the outer cell's weights are not finite: the nearest hull face answers.
+		if ( f < 0 || ! ( u0 - u0 + u1 - u1 + u2 - u2 === 0 ) ) return this.interpolateNearestFace( x, y, z, indices, weights, true );
 
 		// Clamp the slack the walk allowed (as inside).
-		const w0 = _outer[ 1 ] > 0 ? _outer[ 1 ] : 0, w1 = _outer[ 2 ] > 0 ? _outer[ 2 ] : 0, w2 = _outer[ 3 ] > 0 ? _outer[ 3 ] : 0;
+		const w0 = u0 > 0 ? u0 : 0, w1 = u1 > 0 ? u1 : 0, w2 = u2 > 0 ? u2 : 0;
 		const s = 1 / ( w0 + w1 + w2 );
 		this.writeFace( f, indices );
 		weights[ 0 ] = w0 * s; weights[ 1 ] = w1 * s; weights[ 2 ] = w2 * s; weights[ 3 ] = 0;
@@ -394,7 +425,19 @@ export class TetrahedralMesh implements ProbeInterpolator {
 
 		const face = this.nearestHullFace( x, y, z );
 		this.writeFace( face, indices );
-		weights[ 0 ] = _closest[ 3 ]; weights[ 1 ] = _closest[ 4 ]; weights[ 2 ] = _closest[ 5 ]; weights[ 3 ] = 0;
+		const u0 = _closest[ 3 ], u1 = _closest[ 4 ], u2 = _closest[ 5 ];
+		if ( u0 - u0 + u1 - u1 + u2 - u2 === 0 ) {
+
+			weights[ 0 ] = u0; weights[ 1 ] = u1; weights[ 2 ] = u2;
+
+		} else {
+
+			// Squared distances that overflowed (coordinates beyond ~1e154): the face's centroid.
+			weights[ 0 ] = 1 / 3; weights[ 1 ] = 1 / 3; weights[ 2 ] = 1 / 3;
+
+		}
+
+		weights[ 3 ] = 0;
 		return outerHint ? this.tetrahedra.length / 4 + face : this.hullFaceTetrahedra[ face ];
 
 	}
@@ -451,33 +494,5 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		return best;
 
 	}
-
-}
-
-/** {@link validateTetrahedralization} for fromTetrahedralization: indices out of range stay RangeErrors, like its other argument checks. */
-function validated( p: Float64Array, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number> ): ValidTetrahedralization {
-
-	try {
-
-		return validateTetrahedralization( FROM, p, tetrahedra, neighbors );
-
-	} catch ( error ) {
-
-		if ( error instanceof TetrahedralizationError && error.code === 'range' ) throw new RangeError( error.message );
-		throw error;
-
-	}
-
-}
-
-function toUint32( values: ArrayLike<number> ): Uint32Array {
-
-	return values instanceof Uint32Array ? values : Uint32Array.from( values );
-
-}
-
-function toInt32( values: ArrayLike<number> ): Int32Array {
-
-	return values instanceof Int32Array ? values : Int32Array.from( values );
 
 }

@@ -50,7 +50,8 @@ export function blendSH<T extends Float32Array | Float64Array | number[]>(
 	if ( count === 8 ) {
 
 		// The trilinear grid: one pass as well (the accumulating loop below is ~8× slower here).
-		const w0 = weights[ 0 ], w1 = weights[ 1 ], w2 = weights[ 2 ], w3 = weights[ 3 ], w4 = weights[ 4 ], w5 = weights[ 5 ], w6 = weights[ 6 ], w7 = weights[ 7 ];
+		const w0 = weights[ 0 ], w1 = weights[ 1 ], w2 = weights[ 2 ], w3 = weights[ 3 ];
+		const w4 = weights[ 4 ], w5 = weights[ 5 ], w6 = weights[ 6 ], w7 = weights[ 7 ];
 		const b0 = SH_FLOATS * indices[ 0 ], b1 = SH_FLOATS * indices[ 1 ], b2 = SH_FLOATS * indices[ 2 ], b3 = SH_FLOATS * indices[ 3 ];
 		const b4 = SH_FLOATS * indices[ 4 ], b5 = SH_FLOATS * indices[ 5 ], b6 = SH_FLOATS * indices[ 6 ], b7 = SH_FLOATS * indices[ 7 ];
 		for ( let i = 0; i < SH_FLOATS; i ++ ) {

@@ -1,3 +1,4 @@
+import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
 import { OuterCells } from './OuterCells.js';
 import { computeInverseMatrices } from './inverseMatrices.js';
 
@@ -65,5 +66,36 @@ export function buildMeshParts(
 		where, positions: p, tetrahedra, neighbors, duplicates, inverseMatrices,
 		hullFaces: faces, hullFaceTetrahedra: owners, hullFaceSlots: slots, outerCells: new OuterCells( p, faces, where ),
 	};
+
+}
+
+/**
+ * A stored tetrahedralization as typed arrays (kept by reference when they already are):
+ * {@link validateTetrahedralization}'s result, with indices out of range as RangeErrors like
+ * `where`'s other argument checks, or unchecked when `trusted`.
+ */
+export function storedTetrahedralization(
+	where: string, p: Float64Array, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, trusted: boolean,
+): ValidTetrahedralization {
+
+	if ( trusted ) {
+
+		return {
+			tetrahedra: tetrahedra instanceof Uint32Array ? tetrahedra : Uint32Array.from( tetrahedra ),
+			neighbors: neighbors instanceof Int32Array ? neighbors : Int32Array.from( neighbors ),
+		};
+
+	}
+
+	try {
+
+		return validateTetrahedralization( where, p, tetrahedra, neighbors );
+
+	} catch ( error ) {
+
+		if ( error instanceof TetrahedralizationError && error.code === 'range' ) throw new RangeError( error.message );
+		throw error;
+
+	}
 
 }
