@@ -18,17 +18,16 @@
  *                                        BENCH_CAPTURE_PARTS=frames: only some of the three parts)
  */
 
-import { existsSync, readdirSync, readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { CHROMIUM_ARGS, checkChromium, launchChromium, resolveChromiumPath } from '../cli/chromium.js';
 import type { CaptureBenchApi } from './pages/capture.js';
 import { summarize, type Summary } from './stats.js';
 import type { BenchRow, Target } from './types.js';
 
 const BENCH_DIR = fileURLToPath( new URL( '.', import.meta.url ) );
-const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
-const CHROMIUM_ARGS = [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ];
 const QUICK = process.env.BENCH_QUICK === '1';
 /** BENCH_CAPTURE_PARTS=projection,bake,frames (default all) runs only those parts. */
 const PARTS = ( process.env.BENCH_CAPTURE_PARTS ?? 'projection,bake,frames' ).split( ',' ).map( ( part ) => part.trim() );
@@ -73,15 +72,17 @@ export const notes: string[] = [
 	'3 (frames): four scenes, one per variant, each with the room (walls unlit — MeshBasicMaterial — so only the spheres pay for probe lighting in every variant), the ceiling panel, a PointLight and 500 spheres (radius 0.08 m, 16 × 12 segments) each with its own MeshStandardMaterial, moving on the same Lissajous paths through the probe hull. none: no probe. global: one THREE.LightProbe holding the volume\'s SH at the room centre. grid: LightProbeGridWebGL baked at 32², in the scene. ours: LightProbeVolume over the same 64 probes captured at 32², the spheres added with volume.add (each sphere\'s own material patched in place — no clones; one shared program). Per frame timed: [volume.update(), ours only] + renderer.render + a 1-pixel canvas readPixels (GPU sync); moving the spheres is not timed. Frames interleave: each animation step renders one frame of every variant, in an order rotated per step, so all four see the same machine load. 6 rounds of 2 warm-up + 15 timed steps; a round\'s figure is the median of its 15 frames; figure = median of the round medians, min / max of the round medians.',
 ];
 
+type Browser = import( 'puppeteer-core' ).Browser;
 type Page = import( 'puppeteer-core' ).Page;
 
 const loads: string[] = [];
 
 export async function run( log: ( message: string ) => void ): Promise<BenchRow[]> {
 
-	if ( ! existsSync( CHROMIUM ) ) throw new Error( `no Chromium at ${CHROMIUM}; run scripts/setup.sh or set CHROMIUM_PATH` );
+	const chromium = resolveChromiumPath();
+	const missing = checkChromium( chromium.path, chromium.source );
+	if ( missing ) throw new Error( `capture bench: ${missing}` );
 	const { createServer } = await import( 'vite' );
-	const { default: puppeteer } = await import( 'puppeteer-core' );
 	const ours = process.env.BENCH_OURS ? resolve( process.env.BENCH_OURS ) : null;
 
 	const server = await createServer( {
@@ -98,21 +99,22 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 	await server.listen();
 	const url = `${server.resolvedUrls!.local[ 0 ]}capture.html`;
 
-	const browser = await puppeteer.launch( {
-		executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 900_000,
-		defaultViewport: { width: 1280, height: 720, deviceScaleFactor: 1 },
-	} );
 	const errors: string[] = [];
 	const rows: BenchRow[] = [];
+	let browser: Browser | null = null;
 
 	try {
 
+		browser = await launchChromium( {
+			browser: chromium.path, protocolTimeout: 900_000, defaultViewport: { width: 1280, height: 720, deviceScaleFactor: 1 },
+		} );
 		const page = await browser.newPage();
 		page.on( 'pageerror', ( error ) => errors.push( 'page error: ' + ( error as Error ).message ) );
 		page.on( 'console', ( message ) => { if ( message.type() === 'error' || message.type() === 'warn' ) errors.push( `console.${message.type()}: ${message.text()}` ); } );
 		log( `loading ${url}` );
 		await page.goto( url, { waitUntil: 'load' } );
-		await page.waitForFunction( () => ( window as unknown as { captureBenchReady?: boolean } ).captureBenchReady === true, { timeout: 120_000 } );
+		const ready = () => ( window as unknown as { captureBenchReady?: boolean } ).captureBenchReady === true;
+		await page.waitForFunction( ready, { timeout: 120_000 } );
 
 		const info = await call( page, 'info' );
 		const version = await browser.version();
@@ -126,7 +128,7 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 
 	} finally {
 
-		await browser.close().catch( () => undefined );
+		await browser?.close().catch( () => undefined );
 		await server.close().catch( () => undefined );
 
 	}
@@ -157,7 +159,9 @@ function packageVersion( name: string ): string {
  * much CPU other processes took meanwhile (the machine's busy time minus this process and its
  * Chromium's), since Chromium's "GPU" here is the CPU.
  */
-async function section( name: string, browserPid: number | null, rows: BenchRow[], log: ( message: string ) => void, body: () => Promise<void> ): Promise<void> {
+async function section(
+	name: string, browserPid: number | null, rows: BenchRow[], log: ( message: string ) => void, body: () => Promise<void>,
+): Promise<void> {
 
 	const start = performance.now();
 	const before = cpuSnapshot( browserPid );
@@ -189,7 +193,9 @@ async function section( name: string, browserPid: number | null, rows: BenchRow[
 }
 
 /** Calls `window.captureBench[ name ]( ...args )` in the page and returns its (JSON) result. */
-async function call<K extends keyof CaptureBenchApi>( page: Page, name: K, ...args: Parameters<CaptureBenchApi[ K ]> ): Promise<Awaited<ReturnType<CaptureBenchApi[ K ]>>> {
+async function call<K extends keyof CaptureBenchApi>(
+	page: Page, name: K, ...args: Parameters<CaptureBenchApi[ K ]>
+): Promise<Awaited<ReturnType<CaptureBenchApi[ K ]>>> {
 
 	return page.evaluate( ( fn: string, fnArgs: unknown[] ) => {
 

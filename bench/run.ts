@@ -8,6 +8,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { availableParallelism, cpus, loadavg, platform, release, totalmem } from 'node:os';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { resolveChromiumPath } from '../cli/chromium.js';
 import { cgalVersion } from './cgal.js';
 import { scipyVersions } from './peers/scipyQhull.js';
 import type { BenchModule, BenchRow } from './types.js';
@@ -55,7 +56,8 @@ async function main(): Promise<void> {
 		} catch ( error ) {
 
 			log( 'failed: ' + ( ( error as Error ).stack ?? error ) );
-			report = { name, title: name, notes: [], seconds: ( performance.now() - start ) / 1000, rows: [], error: String( ( error as Error ).message ?? error ) };
+			const seconds = ( performance.now() - start ) / 1000;
+			report = { name, title: name, notes: [], seconds, rows: [], error: String( ( error as Error ).message ?? error ) };
 
 		}
 
@@ -133,10 +135,10 @@ function loadAverage(): string {
 
 }
 
-/** The browser the Chromium benches drive (CHROMIUM_PATH or /usr/bin/chromium), e.g. `'156.0.8078.79'`. */
+/** The browser the Chromium benches drive (by cli/chromium.ts's rule), e.g. `'156.0.8078.79'`. */
 function chromiumVersion(): string {
 
-	const binary = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+	const binary = resolveChromiumPath().path;
 	const version = existsSync( binary ) ? command( binary, [ '--version' ] ) : null;
 	return version ? ( /[\d.]+/.exec( version )?.[ 0 ] ?? version ) : 'not installed';
 

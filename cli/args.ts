@@ -1,3 +1,4 @@
+import { resolveChromiumPath } from './chromium.js';
 import { CliError } from './errors.js';
 
 /** The usage text of `capture-lighting --help`. */
@@ -25,7 +26,8 @@ Options of bake:
   --sun <x,y,z[,i]>        add a directional light with shadows, coming from direction x,y,z
                            (towards the sun), intensity i (default 3)
   --ambient <i>            add a white ambient light of intensity i
-  --browser <path>         Chromium executable (default $CHROME_PATH, $CHROMIUM_PATH or /usr/bin/chromium)
+  --browser <path>         Chromium executable (default: $CHROME_PATH, else $CHROMIUM_PATH, else
+                           /usr/bin/chromium; empty variables count as unset)
   --quiet                  no progress bar and no summary
   --help                   this text
 
@@ -184,11 +186,14 @@ export function parseArguments( argv: readonly string[], env: Record<string, str
 	const ambient = parseNumber( '--ambient', values.get( '--ambient' ) ?? '0' );
 	if ( ambient < 0 ) throw new CliError( `--ambient must be ≥ 0, got ${ambient}.` );
 
-	const browser = values.get( '--browser' ) ?? env.CHROME_PATH ?? env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+	const browser = resolveChromiumPath( values.get( '--browser' ), env ).path;
 
 	return {
 		command: 'bake',
-		options: { scene: positional[ 0 ], probes, out, resolution, format: formatText, precision: precisionText, near, far, sky, sun, ambient, browser, quiet },
+		options: {
+			scene: positional[ 0 ], probes, out, resolution, format: formatText, precision: precisionText,
+			near, far, sky, sun, ambient, browser, quiet,
+		},
 	};
 
 }

@@ -6,11 +6,10 @@ import { fileURLToPath } from 'node:url';
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Browser } from 'puppeteer-core';
 import type { Plugin, ViteDevServer } from 'vite';
+import { checkChromium, importPuppeteer, launchChromium } from './chromium.js';
+import { libraryAliases } from './libraryAliases.js';
 import { CliError } from './errors.js';
 import { PROGRESS_FUNCTION, type BakePageApi, type BakeRequest, type BakeResult } from './bakePage/protocol.js';
-
-/** Chromium's flags: WebGL2 on SwiftShader (the CPU), no sandbox (containers), no network chatter. */
-export const CHROMIUM_ARGS = [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ];
 
 /** What {@link captureInBrowser} needs besides the request's capture settings. */
 export interface BrowserCaptureOptions {
@@ -21,7 +20,7 @@ export interface BrowserCaptureOptions {
 	/** An equirectangular .hdr sky on disk, if any. */
 	skyFile: string | null;
 
-	/** Chromium's executable. */
+	/** Chromium's executable (parseArguments resolves it: --browser, CHROME_PATH, CHROMIUM_PATH, /usr/bin/chromium). */
 	browser: string;
 
 	/** Progress of each stage ('loading', 'capturing'). */
@@ -40,11 +39,16 @@ export interface BrowserCaptureOptions {
  */
 export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 'sky'> & { sky: { color: [ number, number, number ] } | null }, options: BrowserCaptureOptions ): Promise<BakeResult> {
 
-	if ( ! existsSync( options.browser ) ) throw new CliError( `Chromium not found at ${options.browser}; install it (apt install chromium) or pass --browser <path> (or set CHROME_PATH).` );
+	const missing = checkChromium( options.browser );
+	if ( missing ) throw new CliError( missing );
 	const sceneFolder = dirname( resolve( options.scene ) );
 	const skyFolder = options.skyFile ? dirname( resolve( options.skyFile ) ) : null;
 
-	const puppeteer = await importPuppeteer();
+	await importPuppeteer( 'capture-lighting bake' ).catch( ( error: Error ) => {
+
+		throw new CliError( error.message );
+
+	} );
 	const folders: [ string, string ][] = [ [ '/__scene', sceneFolder ], ...( skyFolder ? [ [ '/__sky', skyFolder ] as [ string, string ] ] : [] ) ];
 	const prebuilt = findPrebuiltPage();
 	const server = prebuilt ? await startStaticServer( [ ...folders, [ '/__page', prebuilt ] ] ) : await startViteServer( findRoot(), folders );
@@ -56,7 +60,7 @@ export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 
 		const baseUrl = server.baseUrl;
 		try {
 
-			browser = await puppeteer.launch( { executablePath: options.browser, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 24 * 3_600_000 } );
+			browser = await launchChromium( { browser: options.browser, protocolTimeout: 24 * 3_600_000 } );
 
 		} catch ( error ) {
 
@@ -68,9 +72,11 @@ export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 
 		const errors: string[] = [];
 		page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
 		page.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
-		await page.exposeFunction( PROGRESS_FUNCTION, ( stage: string, done: number, total: number ) => options.onProgress?.( stage, done, total ) );
+		const progress = ( stage: string, done: number, total: number ) => options.onProgress?.( stage, done, total );
+		await page.exposeFunction( PROGRESS_FUNCTION, progress );
 		await page.goto( baseUrl + pagePath, { waitUntil: 'load' } );
-		await page.waitForFunction( () => ( window as unknown as { bakeReady?: boolean } ).bakeReady === true, { timeout: 120_000 } ).catch( ( error ) => {
+		const ready = () => ( window as unknown as { bakeReady?: boolean } ).bakeReady === true;
+		await page.waitForFunction( ready, { timeout: 120_000 } ).catch( ( error ) => {
 
 			throw new CliError( `the bake page did not start in Chromium: ${errors.join( ' | ' ) || ( error as Error ).message}`, 1 );
 
@@ -96,21 +102,6 @@ export async function captureInBrowser( request: Omit<BakeRequest, 'sceneUrl' | 
 
 		await browser?.close().catch( () => undefined );
 		await server.close().catch( () => undefined );
-
-	}
-
-}
-
-/** puppeteer-core, or a clear error when it is not installed (it is an optional peer dependency). */
-async function importPuppeteer(): Promise<typeof import( 'puppeteer-core' )[ 'default' ]> {
-
-	try {
-
-		return ( await import( 'puppeteer-core' ) ).default;
-
-	} catch {
-
-		throw new CliError( 'capture-lighting bake drives Chromium through puppeteer-core, which is not installed: npm install puppeteer-core' );
 
 	}
 
@@ -174,7 +165,7 @@ async function startViteServer( root: string, folders: [ string, string ][] ): P
 		root,
 		logLevel: 'error',
 		plugins: folders.map( ( [ route, folder ] ) => folderPlugin( route, folder ) ),
-		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
+		resolve: { alias: libraryAliases( root ) },
 		// No watching or HMR: an edit elsewhere must not reload the page mid-bake.
 		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null },
 		optimizeDeps: { noDiscovery: true, include: [] },

@@ -5,11 +5,13 @@
 //   npm start -- --check      (or CI=true) open the Basic page in headless Chromium, wait until it
 //                             has rendered, save a screenshot to test/output/basic.png, and exit:
 //                             non-zero on a page error, a console error, or a blank frame.
+//
+// Chromium comes from cli/chromium.ts (CHROME_PATH, else CHROMIUM_PATH, else /usr/bin/chromium),
+// loaded through tsx since this file is plain Node.
 import { createServer } from 'vite';
-import { mkdirSync, existsSync } from 'node:fs';
+import { mkdirSync } from 'node:fs';
 
 const check = process.argv.includes( '--check' ) || process.env.CI === 'true';
-const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
 
 const server = await createServer( { configFile: new URL( '../vite.config.ts', import.meta.url ).pathname, logLevel: check ? 'warn' : 'info' } );
 await server.listen();
@@ -35,13 +37,9 @@ if ( ! check ) {
 
 async function checkPage( pageUrl ) {
 
-	if ( ! existsSync( CHROMIUM ) ) throw new Error( `no Chromium at ${CHROMIUM}; run scripts/setup.sh (Debian package "chromium") or set CHROMIUM_PATH.` );
-	const { default: puppeteer } = await import( 'puppeteer-core' );
-	const browser = await puppeteer.launch( {
-		executablePath: CHROMIUM,
-		headless: true,
-		args: [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ],
-	} );
+	const { tsImport } = await import( 'tsx/esm/api' );
+	const { launchChromium } = await tsImport( '../cli/chromium.ts', import.meta.url );
+	const browser = await launchChromium();
 
 	try {
 
@@ -65,7 +63,12 @@ async function checkPage( pageUrl ) {
 			context.drawImage( canvas, 0, 0, 64, 36 );
 			const data = context.getImageData( 0, 0, 64, 36 ).data;
 			const colours = new Set();
-			for ( let i = 0; i < data.length; i += 4 ) colours.add( ( data[ i ] >> 4 ) << 8 | ( data[ i + 1 ] >> 4 ) << 4 | ( data[ i + 2 ] >> 4 ) );
+			for ( let i = 0; i < data.length; i += 4 ) {
+
+				colours.add( ( data[ i ] >> 4 ) << 8 | ( data[ i + 1 ] >> 4 ) << 4 | ( data[ i + 2 ] >> 4 ) );
+
+			}
+
 			return colours.size;
 
 		} );

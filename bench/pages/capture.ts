@@ -38,10 +38,14 @@ camera.lookAt( 0, 1.3, - 2 );
 const size = new THREE.Vector3().fromArray( ROOM_MAX ).sub( new THREE.Vector3().fromArray( ROOM_MIN ) );
 // BoxGeometry groups: +x, −x, +y, −y, +z, −z. Seen from inside (BackSide).
 const WALL_COLORS = [ 0x20c020, 0xc02020, 0xffffff, 0xffffff, 0xffffff, 0x2020c0 ];
-const litWalls = WALL_COLORS.map( ( color ) => new THREE.MeshStandardMaterial( { color, roughness: 1, metalness: 0, side: THREE.BackSide } ) );
+const litWalls = WALL_COLORS.map( ( color ) => new THREE.MeshStandardMaterial( {
+	color, roughness: 1, metalness: 0, side: THREE.BackSide,
+} ) );
 // Frame-time test: unlit walls, so only the 500 spheres pay for probe lighting in every variant
 // (a global LightProbe or three's grid would otherwise also shade the full-screen walls).
-const unlitWalls = WALL_COLORS.map( ( color ) => new THREE.MeshBasicMaterial( { color: new THREE.Color( color ).multiplyScalar( 0.5 ), side: THREE.BackSide } ) );
+const unlitWalls = WALL_COLORS.map( ( color ) => new THREE.MeshBasicMaterial( {
+	color: new THREE.Color( color ).multiplyScalar( 0.5 ), side: THREE.BackSide,
+} ) );
 const room = new THREE.Mesh<THREE.BoxGeometry, THREE.Material[]>( new THREE.BoxGeometry( size.x, size.y, size.z ), litWalls );
 room.position.set( 0, ( ROOM_MIN[ 1 ] + ROOM_MAX[ 1 ] ) / 2, 0 );
 scene.add( room );
@@ -117,7 +121,9 @@ const fetch3D = new THREE.RawShaderMaterial( {
 /** Reads texels ( ix, iy, slice ) of a 3D texture, `count` = nx·ny of them, as RGBA floats. */
 function read3D( texture: THREE.Texture, nx: number, ny: number, slice: number ): Float32Array {
 
-	const target = new THREE.WebGLRenderTarget( nx * ny, 1, { type: THREE.FloatType, depthBuffer: false, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter } );
+	const target = new THREE.WebGLRenderTarget( nx * ny, 1, {
+		type: THREE.FloatType, depthBuffer: false, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter,
+	} );
 	fetch3D.uniforms.atlas.value = texture;
 	fetch3D.uniforms.slice.value = slice;
 	fetch3D.uniforms.resolution.value.set( nx, ny );
@@ -221,7 +227,8 @@ function peerPortSyncOne( index: number ): { ms: number, readMs: number, sh: num
 	const flip = renderer.coordinateSystem === THREE.WebGLCoordinateSystem ? - 1 : 1;
 	const dataType = target.texture.type;
 	const imageWidth = target.width;
-	const data = dataType === THREE.FloatType ? new Float32Array( imageWidth * imageWidth * 4 ) : new Uint16Array( imageWidth * imageWidth * 4 );
+	const texels = imageWidth * imageWidth * 4;
+	const data = dataType === THREE.FloatType ? new Float32Array( texels ) : new Uint16Array( texels );
 	const coord = new THREE.Vector3(), dir = new THREE.Vector3(), color = new THREE.Color();
 	const shBasis = [ 0, 0, 0, 0, 0, 0, 0, 0, 0 ];
 	const sh = new THREE.SphericalHarmonics3();
@@ -237,7 +244,11 @@ function peerPortSyncOne( index: number ): { ms: number, readMs: number, sh: num
 		for ( let i = 0, il = data.length; i < il; i += 4 ) {
 
 			if ( dataType === THREE.FloatType ) color.setRGB( data[ i ], data[ i + 1 ], data[ i + 2 ] );
-			else color.setRGB( THREE.DataUtils.fromHalfFloat( data[ i ] ), THREE.DataUtils.fromHalfFloat( data[ i + 1 ] ), THREE.DataUtils.fromHalfFloat( data[ i + 2 ] ) );
+			else color.setRGB(
+				THREE.DataUtils.fromHalfFloat( data[ i ] ),
+				THREE.DataUtils.fromHalfFloat( data[ i + 1 ] ),
+				THREE.DataUtils.fromHalfFloat( data[ i + 2 ] ),
+			);
 			const pixelIndex = i / 4;
 			const col = ( 1 - ( pixelIndex % imageWidth + 0.5 ) * pixelSize ) * flip;
 			const row = 1 - ( Math.floor( pixelIndex / imageWidth ) + 0.5 ) * pixelSize;
@@ -313,7 +324,9 @@ function renderCubesOnly( cubeSize: number ): { ms: number } {
 	if ( ! renderOnly || renderOnly.target.width !== cubeSize ) {
 
 		renderOnly?.target.dispose();
-		const target = new THREE.WebGLCubeRenderTarget( cubeSize, { type: THREE.HalfFloatType, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false } );
+		const target = new THREE.WebGLCubeRenderTarget( cubeSize, {
+			type: THREE.HalfFloatType, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
+		} );
 		renderOnly = { target, camera: new THREE.CubeCamera( NEAR, FAR, target ) };
 
 	}

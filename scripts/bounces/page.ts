@@ -94,7 +94,10 @@ const api: BounceApi = {
 				if ( standard.isMeshStandardMaterial !== true || standard.emissive.getHex() === 0 ) continue;
 				// loadOBJScene's stand-in: emissive = 0.12 × colour, with the colour's map.
 				expected.copy( standard.color ).multiplyScalar( 0.12 );
-				const isStandIn = standard.emissiveMap === standard.map && Math.abs( expected.r - standard.emissive.r ) + Math.abs( expected.g - standard.emissive.g ) + Math.abs( expected.b - standard.emissive.b ) < 1e-5;
+				const emissive = standard.emissive;
+				const distance = Math.abs( expected.r - emissive.r ) + Math.abs( expected.g - emissive.g )
+					+ Math.abs( expected.b - emissive.b );
+				const isStandIn = standard.emissiveMap === standard.map && distance < 1e-5;
 				if ( isStandIn ) standIn.set( standard, standard.emissive.clone() );
 				else glowing.add( standard.name );
 

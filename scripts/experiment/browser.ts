@@ -1,24 +1,20 @@
 /**
- * The experiment's GPU: headless Chromium (WebGL2 on SwiftShader unless Chromium is given a GPU)
- * driven by puppeteer-core, serving scripts/experiment/page.html (and scripts/bounces/page.html)
+ * The experiment's GPU: headless Chromium (cli/chromium.ts: WebGL2 on SwiftShader unless Chromium
+ * is given a GPU) driven by puppeteer-core, serving scripts/experiment/page.html (and scripts/bounces/page.html)
  * through a Vite dev server over the repository — the same scene modules, loaders and asset route
  * as the demo pages.
  */
 
-import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { Browser, Page } from 'puppeteer-core';
 import type { ViteDevServer } from 'vite';
+import { launchChromium } from '../../cli/chromium.js';
+import { libraryAliases } from '../../cli/libraryAliases.js';
 import { assetsPlugin } from '../assetsPlugin.mjs';
 import type { CaptureRequest, ExperimentApi, LoadedScene } from './page.js';
 
 const ROOT = resolve( fileURLToPath( new URL( '../..', import.meta.url ) ) );
-
-/** Chromium's path: $CHROMIUM_PATH or Debian's. */
-export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
-
-export const CHROMIUM_ARGS = [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ];
 
 /** A loaded experiment page. */
 export interface ExperimentSession {
@@ -43,7 +39,9 @@ export interface ScriptPage<Api> {
 	browser: Browser;
 	browserVersion: string;
 	/** Calls `window[ name ][ method ]( ...args )` in the page; page errors are added to a failure's message. */
-	call<K extends keyof Api>( method: K, ...args: Api[ K ] extends ( ...a: infer A ) => unknown ? A : never ): Promise<Api[ K ] extends ( ...a: never[] ) => infer R ? Awaited<R> : never>;
+	call<K extends keyof Api>(
+		method: K, ...args: Api[ K ] extends ( ...a: infer A ) => unknown ? A : never
+	): Promise<Api[ K ] extends ( ...a: never[] ) => infer R ? Awaited<R> : never>;
 	close(): Promise<void>;
 
 }
@@ -51,16 +49,14 @@ export interface ScriptPage<Api> {
 /** Opens `scripts/<name>/page.html` (the experiment's and the bounce measurement's pages). */
 export async function openScriptPage<Api>( name: string, log: ( message: string ) => void ): Promise<ScriptPage<Api>> {
 
-	if ( ! existsSync( CHROMIUM ) ) throw new Error( `no Chromium at ${CHROMIUM}: run scripts/setup.sh, or set CHROMIUM_PATH` );
 	const { createServer } = await import( 'vite' );
-	const { default: puppeteer } = await import( 'puppeteer-core' );
 
 	const server: ViteDevServer = await createServer( {
 		configFile: false,
 		root: ROOT,
 		logLevel: 'error',
 		plugins: [ assetsPlugin() ],
-		resolve: { alias: { 'three-capture-lighting': resolve( ROOT, 'src/index.ts' ), '@scenes': resolve( ROOT, 'scenes' ) } },
+		resolve: { alias: libraryAliases( ROOT ) },
 		// No file watching or HMR: edits elsewhere in the repository must not reload the page mid-run.
 		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null },
 		optimizeDeps: { noDiscovery: true, include: [] },
@@ -78,7 +74,7 @@ export async function openScriptPage<Api>( name: string, log: ( message: string 
 
 	try {
 
-		browser = await puppeteer.launch( { executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, protocolTimeout: 3_600_000 } );
+		browser = await launchChromium( { protocolTimeout: 3_600_000 } );
 		const page: Page = await browser.newPage();
 		const errors: string[] = [];
 		const prefix = `[${name}]`;

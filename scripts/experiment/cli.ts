@@ -33,7 +33,7 @@ DIR/<scene>.png (default DIR: experiment/results).
                    the dense set and the fixed layouts) for re-analysis
 
 Sponza and Sibenik need the Dabrovic models in the asset folder ../shared/assets/ (or the folder
-named by CAPTURE_LIGHTING_ASSETS); Chromium at /usr/bin/chromium or CHROMIUM_PATH.`;
+named by CAPTURE_LIGHTING_ASSETS); Chromium at $CHROME_PATH, else $CHROMIUM_PATH, else /usr/bin/chromium.`;
 
 /** Parses the arguments; throws an Error with a message for the user on bad input. */
 export function parseArguments( argv: readonly string[] ): ExperimentOptions | 'help' {

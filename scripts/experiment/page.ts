@@ -102,7 +102,8 @@ const api: ExperimentApi = {
 			if ( mesh.isMesh ) {
 
 				meshes ++;
-				for ( const material of Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ] ) if ( ( material as THREE.MeshStandardMaterial ).map ) textures ++;
+				const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
+				for ( const material of materials ) if ( ( material as THREE.MeshStandardMaterial ).map ) textures ++;
 
 			}
 
@@ -145,7 +146,9 @@ const api: ExperimentApi = {
 
 			// The library's defaults (HalfFloat targets: linear HDR, no clipping; exact solid
 			// angles); the same settings for every layout and the ground truth.
-			capturer = new ProbeCapturer( renderer, { resolution: settings.resolution, near: settings.near, far: settings.far, type: THREE.HalfFloatType } );
+			capturer = new ProbeCapturer( renderer, {
+				resolution: settings.resolution, near: settings.near, far: settings.far, type: THREE.HalfFloatType,
+			} );
 			capturers.set( key, capturer );
 			// Warm-up, not timed: shader compilation and the shadow maps' one-off render.
 			await capturer.capture( scene, positions.slice( 0, 3 ), new Float32Array( 27 ) );

@@ -5,13 +5,15 @@ import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { bakedVolumeFromJSON, decodeBakedVolume } from '../../src/io/index.js';
+import { checkChromium, resolveChromiumPath } from '../../cli/chromium.js';
 import { ROOM_PROBES, ROOT, runCli, writeConstantHDR, writeEmptyGLTF, writeLayout, writeLitFloorGLTF, writeRoom } from './fixtures.js';
 
 // End to end in headless Chromium (SwiftShader): few, small bakes at 8² and 16².
-const CHROMIUM = process.env.CHROME_PATH ?? process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
-const skipReason = existsSync( CHROMIUM ) ? '' : `no Chromium at ${CHROMIUM} (apt install chromium, or set CHROME_PATH): the CLI bake tests are skipped`;
+const CHROMIUM = resolveChromiumPath();
+const missing = checkChromium( CHROMIUM.path, CHROMIUM.source );
+const skipReason = missing ? `${missing} The CLI bake tests are skipped.` : '';
 if ( skipReason ) console.warn( skipReason );
-const ENV = { CHROME_PATH: CHROMIUM };
+const ENV = { CHROME_PATH: CHROMIUM.path };
 
 /** three's Y00 basis constant (SphericalHarmonics3). */
 const Y00 = 0.282095;

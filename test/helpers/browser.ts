@@ -1,8 +1,9 @@
-import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import type { ViteDevServer } from 'vite';
 import type { Browser, Page } from 'puppeteer-core';
+import { checkChromium, launchChromium, resolveChromiumPath } from '../../cli/chromium.js';
+import { libraryAliases } from '../../cli/libraryAliases.js';
 import { assetsPlugin, assetsFolder } from '../../scripts/assetsPlugin.mjs';
 
 /** Where the third-party assets are looked for (CAPTURE_LIGHTING_ASSETS or ../shared/assets). */
@@ -10,11 +11,16 @@ export const ASSETS: string = assetsFolder;
 
 /**
  * Browser tests: a Vite dev server over the repository (so both examples/ and test/browser/pages/
- * are reachable, with `three-capture-lighting` aliased to src/) and Debian's Chromium through
- * puppeteer-core, WebGL2 on SwiftShader. `skipReason` is set when Chromium is missing.
+ * are reachable, with `three-capture-lighting` and its subpaths aliased to src/) and Chromium started by
+ * cli/chromium.ts (WebGL2 on SwiftShader). `browserSkipReason` is set when Chromium is missing.
  */
-export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
-export const browserSkipReason = existsSync( CHROMIUM ) ? '' : `no Chromium at ${CHROMIUM} (run scripts/setup.sh, or set CHROMIUM_PATH)`;
+const chromium = resolveChromiumPath();
+
+/** Chromium's executable: CHROME_PATH, else CHROMIUM_PATH, else /usr/bin/chromium. */
+export const CHROMIUM: string = chromium.path;
+
+/** '' when Chromium exists, else why the browser tests are skipped. */
+export const browserSkipReason: string = checkChromium( chromium.path, chromium.source );
 
 const root = resolve( fileURLToPath( new URL( '../..', import.meta.url ) ) );
 
@@ -37,7 +43,7 @@ export async function startBrowser(): Promise<BrowserSession> {
 		root,
 		logLevel: 'error',
 		plugins: [ assetsPlugin() ],
-		resolve: { alias: { 'three-capture-lighting': resolve( root, 'src/index.ts' ), '@scenes': resolve( root, 'scenes' ) } },
+		resolve: { alias: libraryAliases( root ) },
 		server: { host: '127.0.0.1', port: 0, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
 		// No dependency pre-bundling: every dependency is plain ESM, and a re-optimisation found
 		// mid-run would reload a page under test.
@@ -46,12 +52,7 @@ export async function startBrowser(): Promise<BrowserSession> {
 	await server.listen();
 	const baseUrl = server.resolvedUrls!.local[ 0 ];
 
-	const { default: puppeteer } = await import( 'puppeteer-core' );
-	const browser = await puppeteer.launch( {
-		executablePath: CHROMIUM,
-		headless: true,
-		args: [ '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run' ],
-	} );
+	const browser = await launchChromium( { browser: CHROMIUM } );
 
 	return {
 		browser, server, baseUrl,
