@@ -3,6 +3,7 @@ import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import { existsSync } from 'node:fs';
 import { assetsPlugin } from './scripts/assetsPlugin.mjs';
+import { libraryAliases } from './cli/libraryAliases.js';
 
 const root = fileURLToPath( new URL( '.', import.meta.url ) );
 
@@ -11,12 +12,7 @@ export default defineConfig( {
 	root: resolve( root, 'examples' ),
 	plugins: [ assetsPlugin() ],
 	resolve: {
-		alias: [
-			// The package's entries: 'three-capture-lighting' and its subpaths (/math, /format, /capture, /lightProbeGrid).
-			{ find: /^three-capture-lighting$/, replacement: resolve( root, 'src/index.ts' ) },
-			{ find: /^three-capture-lighting\/(math|format|capture|lightProbeGrid)$/, replacement: resolve( root, 'src/$1.ts' ) },
-			{ find: '@scenes', replacement: resolve( root, 'scenes' ) },
-		],
+		alias: libraryAliases( root ),
 	},
 	server: { host: '127.0.0.1', port: 5173, strictPort: false },
 	optimizeDeps: { noDiscovery: true, include: [] },
