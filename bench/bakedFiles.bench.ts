@@ -38,7 +38,9 @@ interface Io {
 interface Mesh { tetrahedra: Uint32Array, neighbors: Int32Array }
 interface MeshClass {
 	new ( positions: ArrayLike<number> ): Mesh;
-	fromTetrahedralization?( positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, options?: { trusted?: boolean } ): Mesh;
+	fromTetrahedralization?(
+		positions: ArrayLike<number>, tetrahedra: ArrayLike<number>, neighbors: ArrayLike<number>, options?: { trusted?: boolean }
+	): Mesh;
 }
 
 /** Loads src/io; null with the reason when it is absent or lacks a function this bench calls. */
@@ -151,7 +153,8 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 				? () => io.bakedVolumeFromJSON( JSON.parse( readFileSync( path, 'utf8' ) ) )
 				: () => io.decodeBakedVolume( readFileSync( path ) ), 10_000 );
 			if ( decoded === null ) continue;
-			const same = decoded.tetrahedra.length === mesh.tetrahedra.length && decoded.tetrahedra.every( ( v, i ) => v === mesh.tetrahedra[ i ] );
+			const same = decoded.tetrahedra.length === mesh.tetrahedra.length &&
+				decoded.tetrahedra.every( ( v, i ) => v === mesh.tetrahedra[ i ] );
 			load.status = same ? `${( decoded.tetrahedra.length / 4 ).toLocaleString( 'en-US' )} tetrahedra read back` : 'MISMATCH: tetrahedra differ from those written';
 
 			if ( format === 'float32' && typeof TetrahedralMesh.fromTetrahedralization === 'function' ) {

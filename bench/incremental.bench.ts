@@ -265,7 +265,12 @@ function checkAgainstScratch( TetrahedralMesh: new ( positions: ArrayLike<number
 
 	const p = mesh.positions, scratch = new TetrahedralMesh( p.slice() );
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let i = 0; i < p.length; i ++ ) { min[ i % 3 ] = Math.min( min[ i % 3 ], p[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], p[ i ] ); }
+	for ( let i = 0; i < p.length; i ++ ) {
+
+		min[ i % 3 ] = Math.min( min[ i % 3 ], p[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], p[ i ] );
+
+	}
+
 	const random = mulberry32( 5 );
 	const a = new Uint32Array( 4 ), wa = new Float64Array( 4 ), b = new Uint32Array( 4 ), wb = new Float64Array( 4 );
 	for ( let n = 0; n < 2000; n ++ ) {

@@ -37,7 +37,8 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 
 		for ( const segments of [ [ 140, 70 ], [ 440, 226 ] ] ) {
 
-			const geometry = new THREE.PlaneGeometry( 28, 11, segments[ 0 ], segments[ 1 ] ).rotateX( - Math.PI / 2 ).translate( 0, height, 0 );
+			const geometry = new THREE.PlaneGeometry( 28, 11, segments[ 0 ], segments[ 1 ] )
+				.rotateX( - Math.PI / 2 ).translate( 0, height, 0 );
 			const vertices = geometry.getAttribute( 'position' ).count;
 			const name = `floor, ${Math.round( vertices / 1000 ).toLocaleString( 'en-US' )}k vertices, ${where}`;
 			for ( const output of [ 'irradiance', 'sh' ] as const ) {

@@ -173,20 +173,32 @@ class MovingObjects {
 
 }
 
-function measure( api: OurApi, probes: Float64Array, mode: Mode ): { rates: number[], located: number, tetrahedra: number, outside: number } {
+function measure(
+	api: OurApi, probes: Float64Array, mode: Mode
+): { rates: number[], located: number, tetrahedra: number, outside: number } {
 
 	const mesh = new api.TetrahedralMesh( probes, mode.outside ? { outside: mode.outside } : undefined );
 	const probeCount = probes.length / 3;
 	const random = mulberry32( 7 );
 	const probeSH = new Float32Array( 27 * probeCount ).map( () => random() );
 	const objects = new MovingObjects( probes, mode.outside ? 0.9 : 0.35 );
-	const state = { hints: new Int32Array( OBJECTS ), indices: new Uint32Array( 4 ), weights: new Float32Array( 4 ), out: new Float32Array( 27 ), checksum: 0 };
+	const state = {
+		hints: new Int32Array( OBJECTS ), indices: new Uint32Array( 4 ), weights: new Float32Array( 4 ), out: new Float32Array( 27 ),
+		checksum: 0
+	};
 
 	// Start every object in its tetrahedron, as a running application would be.
 	let frame = 0;
 	objects.moveTo( frame ++ );
 	let outside = 0;
-	for ( let i = 0; i < OBJECTS; i ++ ) if ( mesh.locate( objects.positions[ 3 * i ], objects.positions[ 3 * i + 1 ], objects.positions[ 3 * i + 2 ], - 1 ) < 0 ) outside ++;
+	for ( let i = 0; i < OBJECTS; i ++ ) {
+
+		if ( mesh.locate(
+			objects.positions[ 3 * i ], objects.positions[ 3 * i + 1 ], objects.positions[ 3 * i + 2 ], - 1
+		) < 0 ) outside ++;
+
+	}
+
 	queryAll( api, mesh, objects.positions, probeSH, state, mode );
 
 	const rates: number[] = [];
@@ -263,7 +275,10 @@ function measureGrid( Grid: GridClass, blendSH: OurApi[ 'blendSH' ], probes: Flo
 }
 
 /** One frame: every object located (and blended); returns how many were inside the mesh. */
-function queryAll( api: OurApi, mesh: OurTetrahedralMesh, positions: Float64Array, probeSH: Float32Array, state: { hints: Int32Array, indices: Uint32Array, weights: Float32Array, out: Float32Array, checksum: number }, mode: Mode ): number {
+function queryAll(
+	api: OurApi, mesh: OurTetrahedralMesh, positions: Float64Array, probeSH: Float32Array,
+	state: { hints: Int32Array, indices: Uint32Array, weights: Float32Array, out: Float32Array, checksum: number }, mode: Mode
+): number {
 
 	const { hints, indices, weights, out } = state;
 	const tetrahedra = mesh.tetrahedra;

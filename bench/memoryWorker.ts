@@ -65,7 +65,8 @@ if ( mode === 'volume' || mode === 'mesh' ) {
 	if ( volume ) Object.assign( arrays, { positions: volume.positions.byteLength, sh: volume.sh.byteLength } );
 	Object.assign( arrays, {
 		'mesh.positions': mesh.positions.byteLength, tetrahedra: mesh.tetrahedra.byteLength, neighbors: mesh.neighbors.byteLength,
-		inverseMatrices: mesh.inverseMatrices.byteLength, hullFaces: mesh.hullFaces.byteLength, hullFaceTetrahedra: mesh.hullFaceTetrahedra.byteLength,
+		inverseMatrices: mesh.inverseMatrices.byteLength, hullFaces: mesh.hullFaces.byteLength,
+		hullFaceTetrahedra: mesh.hullFaceTetrahedra.byteLength,
 		duplicates: mesh.duplicates.byteLength,
 	} );
 	arrays.tetrahedronCount = mesh.tetrahedra.length / 4;
@@ -97,7 +98,8 @@ if ( mode === 'volume' || mode === 'mesh' ) {
 	Object.assign( arrays, {
 		positions: volume.positions.byteLength, sh: volume.sh.byteLength, file: encoded!.byteLength,
 		'mesh.positions': mesh.positions.byteLength, tetrahedra: mesh.tetrahedra.byteLength, neighbors: mesh.neighbors.byteLength,
-		inverseMatrices: mesh.inverseMatrices.byteLength, hullFaces: mesh.hullFaces.byteLength, hullFaceTetrahedra: mesh.hullFaceTetrahedra.byteLength,
+		inverseMatrices: mesh.inverseMatrices.byteLength, hullFaces: mesh.hullFaces.byteLength,
+		hullFaceTetrahedra: mesh.hullFaceTetrahedra.byteLength,
 		duplicates: mesh.duplicates.byteLength,
 	} );
 	arrays.tetrahedronCount = mesh.tetrahedra.length / 4;

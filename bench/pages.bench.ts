@@ -12,10 +12,10 @@ import type { BenchRow } from './types.js';
 export const title = 'Demo pages in headless Chromium (SwiftShader), 1280×720';
 
 export const notes = [
-	'Capture: all probes of the layout rendered and projected to SH on the GPU, timed by the page (DemoApp.recapture, window.__demo.captureMs). The page opens with the layout and captures it at 32² (cold: "first capture"); then, in the same page with its render loop stopped (as during the first capture, so frames do not compete with the capture), warm recaptures at 32² and 128², median / min / max of 3 each. Layouts over 100 probes (the 432-probe grids) are skipped unless BENCH_PAGES_ALL=1, and then get the cold 32² capture only: one takes 1–1.5 minutes in SwiftShader, and the suite should stay within minutes. BENCH_PAGES=basic,kyoto runs only those pages. Kyoto (panoramas, no cube renders): 3 fresh page loads per resolution.',
+	'Capture: all probes of the layout rendered and projected to SH on the GPU, timed by the page (its ProbeVolumeDemo.recapture, window.__demo.captureMs). The page opens with the layout and captures it at 32² (cold: "first capture"); then, in the same page with its render loop stopped (as during the first capture, so frames do not compete with the capture), warm recaptures at 32² and 128², median / min / max of 3 each. Layouts over 100 probes (the 432-probe grids) are skipped unless BENCH_PAGES_ALL=1, and then get the cold 32² capture only: one takes 1–1.5 minutes in SwiftShader, and the suite should stay within minutes. BENCH_PAGES=basic,kyoto runs only those pages. Kyoto (panoramas, no cube renders): 3 fresh page loads per resolution.',
 	'Frame: median time between animation frames (requestAnimationFrame deltas, so GPU work is included) with the character and 100 probe-lit spheres moving; min/max are of those frames. Warm-up 20 frames and 60 timed frames, fewer on slow pages (5 warm-up, and as many as fit in about 20 s, at least 15) so the suite stays within minutes.',
 	'No peer: these figures compare layouts and track the demos; the peer comparisons are in the capture bench. SwiftShader renders on the CPU: not figures for a real GPU.',
-]
+];
 
 /** Warm recaptures per resolution; layouts above MAX_WARM_PROBES get only the cold capture. */
 const WARM_RUNS = 3;
@@ -106,7 +106,7 @@ function layoutProbeCount( layout: string ): number {
 
 }
 
-/** The layout names a page offers (read from its DemoApp / Kyoto frame). */
+/** The layout names a page offers (read from its ProbeVolumeDemo, window.__demoApp, or its Kyoto frame). */
 async function layoutNames( session: BrowserSession, page: string ): Promise<string[]> {
 
 	const { page: tab } = await session.open( `examples/${page}.html?hide=gui&resolution=8`, { width: 320, height: 180 } );

@@ -82,7 +82,10 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 }
 
 /** CGAL, several runs in one process; its result also serves to check ours. */
-async function cgalRun( dataset: Dataset, pointsFile: string, cgal: { binary: string | null, reason: string }, subject: string, log: ( message: string ) => void ): Promise<{ row: BenchRow, result: CgalResult | null }> {
+async function cgalRun(
+	dataset: Dataset, pointsFile: string, cgal: { binary: string | null, reason: string }, subject: string,
+	log: ( message: string ) => void
+): Promise<{ row: BenchRow, result: CgalResult | null }> {
 
 	const row: BenchRow = { case: dataset.name, subject, unit: 'ms', median: null, min: null, max: null, runs: 0, status: cgal.reason };
 	if ( ! cgal.binary ) return { row, result: null };
@@ -105,7 +108,9 @@ async function cgalRun( dataset: Dataset, pointsFile: string, cgal: { binary: st
 }
 
 /** Qhull via SciPy in a Python child process, several runs; skipped when SciPy is absent. */
-async function qhullRow( dataset: Dataset, pointsFile: string, cgal: CgalResult | null, log: ( message: string ) => void ): Promise<BenchRow> {
+async function qhullRow(
+	dataset: Dataset, pointsFile: string, cgal: CgalResult | null, log: ( message: string ) => void
+): Promise<BenchRow> {
 
 	const versions = scipyVersions();
 	const subject = versions ? `Qhull (SciPy ${versions.scipy})` : 'Qhull (SciPy)';
@@ -120,7 +125,9 @@ async function qhullRow( dataset: Dataset, pointsFile: string, cgal: CgalResult 
 }
 
 /** npm delaunay-triangulate, one run in a child process; skipped from the set size it timed out on. */
-async function peerRow( dataset: Dataset, pointsFile: string, cgal: CgalResult | null, timedOutAt: number, log: ( message: string ) => void ): Promise<BenchRow> {
+async function peerRow(
+	dataset: Dataset, pointsFile: string, cgal: CgalResult | null, timedOutAt: number, log: ( message: string ) => void
+): Promise<BenchRow> {
 
 	const row: BenchRow = { case: dataset.name, subject: 'delaunay-triangulate', unit: 'ms', median: null, min: null, max: null, runs: 0 };
 	if ( pointCount( dataset ) >= timedOutAt ) return { ...row, status: `skipped (timed out on ${timedOutAt.toLocaleString( 'en-US' )} points)` };
@@ -134,7 +141,10 @@ async function peerRow( dataset: Dataset, pointsFile: string, cgal: CgalResult |
 
 }
 
-function oursRow( dataset: Dataset, tetrahedralize: ( ( points: ArrayLike<number> ) => Tetrahedralization ) | undefined, missing: string | null, cgal: CgalResult | null, cgalName: string, log: ( message: string ) => void ): BenchRow {
+function oursRow(
+	dataset: Dataset, tetrahedralize: ( ( points: ArrayLike<number> ) => Tetrahedralization ) | undefined, missing: string | null,
+	cgal: CgalResult | null, cgalName: string, log: ( message: string ) => void
+): BenchRow {
 
 	const targetMs = TARGET_MS[ dataset.name ];
 	const timeTarget: Target = { text: `≤ ${targetMs >= 1000 ? targetMs / 1000 + ' s' : targetMs + ' ms'}` };
@@ -205,7 +215,9 @@ function check( dataset: Dataset, result: Tetrahedralization, cgal: CgalResult |
 
 			const n = neighbors[ 4 * t + i ];
 			if ( n < 0 ) continue;
-			if ( n >= count || ( neighbors[ 4 * n ] !== t && neighbors[ 4 * n + 1 ] !== t && neighbors[ 4 * n + 2 ] !== t && neighbors[ 4 * n + 3 ] !== t ) ) oneSided ++;
+			if ( n >= count || (
+				neighbors[ 4 * n ] !== t && neighbors[ 4 * n + 1 ] !== t && neighbors[ 4 * n + 2 ] !== t && neighbors[ 4 * n + 3 ] !== t
+			) ) oneSided ++;
 
 		}
 

@@ -35,7 +35,10 @@ export function encodeVolume( data: VolumeData, format: 'bin' | 'json', precisio
 export function readVolume( bytes: Uint8Array ): ReadVolume {
 
 	let first = 0;
-	while ( first < bytes.length && ( bytes[ first ] === 0x20 || bytes[ first ] === 0x0A || bytes[ first ] === 0x0D || bytes[ first ] === 0x09 || bytes[ first ] === 0xEF || bytes[ first ] === 0xBB || bytes[ first ] === 0xBF ) ) first ++;
+	while ( first < bytes.length && (
+		bytes[ first ] === 0x20 || bytes[ first ] === 0x0A || bytes[ first ] === 0x0D || bytes[ first ] === 0x09 ||
+		bytes[ first ] === 0xEF || bytes[ first ] === 0xBB || bytes[ first ] === 0xBF
+	) ) first ++;
 	const binary = bytes.length >= 8 && BAKED_VOLUME_MAGIC.every( ( byte, i ) => bytes[ i ] === byte );
 	if ( ! binary && bytes[ first ] === 0x7B ) {
 

@@ -80,7 +80,9 @@ export function readLayout( file: string ): CliLayout {
 
 }
 
-function optionalList( file: string, layout: Record<string, unknown>, key: string, count: number, fallback: ( i: number ) => string ): unknown[] {
+function optionalList(
+	file: string, layout: Record<string, unknown>, key: string, count: number, fallback: ( i: number ) => string
+): unknown[] {
 
 	const value = layout[ key ];
 	if ( value === undefined ) return Array.from( { length: count }, ( _, i ) => fallback( i ) );

@@ -69,7 +69,10 @@ controls.update();
 
 const map = createKyotoMap();
 const markers = new THREE.Group();
-const triangles = new THREE.LineSegments( new THREE.BufferGeometry(), new THREE.LineBasicMaterial( { color: 0x203a5a, transparent: true, opacity: 0.7, toneMapped: false } ) );
+const triangles = new THREE.LineSegments(
+	new THREE.BufferGeometry(),
+	new THREE.LineBasicMaterial( { color: 0x203a5a, transparent: true, opacity: 0.7, toneMapped: false } )
+);
 const current = new THREE.Mesh( new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( new Float32Array( 9 ), 3 ) ), new THREE.MeshBasicMaterial( { color: 0xffb000, transparent: true, opacity: 0.35, side: THREE.DoubleSide, toneMapped: false, depthWrite: false } ) );
 const currentEdges = new THREE.LineLoop( current.geometry, new THREE.LineBasicMaterial( { color: 0xff8000, toneMapped: false } ) );
 scene.add( map, markers, triangles, current, currentEdges );
@@ -207,7 +210,10 @@ function updateMarkers(): void {
 	markers.clear();
 	const { probes } = layout();
 	const e = new Float32Array( 3 ), drops: number[] = [];
-	const ringMaterial = { photo: new THREE.MeshBasicMaterial( { color: 0xffffff, toneMapped: false } ), dropped: new THREE.MeshBasicMaterial( { color: 0x66eeff, toneMapped: false } ) };
+	const ringMaterial = {
+		photo: new THREE.MeshBasicMaterial( { color: 0xffffff, toneMapped: false } ),
+		dropped: new THREE.MeshBasicMaterial( { color: 0x66eeff, toneMapped: false } )
+	};
 	for ( const p of probes ) {
 
 		const panorama = panoramas.get( p.panorama )!;
@@ -218,7 +224,10 @@ function updateMarkers(): void {
 
 			evaluateIrradiance( panorama.sh, [ normals.getX( v ), normals.getY( v ), normals.getZ( v ) ], e );
 			// Negative irradiance (SH ringing) cannot be displayed: it is shown magenta, not hidden.
-			colors.set( e[ 0 ] < 0 || e[ 1 ] < 0 || e[ 2 ] < 0 ? [ 1, 0, 1 ] : [ e[ 0 ] / Math.PI, e[ 1 ] / Math.PI, e[ 2 ] / Math.PI ], 3 * v );
+			colors.set(
+				e[ 0 ] < 0 || e[ 1 ] < 0 || e[ 2 ] < 0 ? [ 1, 0, 1 ] : [ e[ 0 ] / Math.PI, e[ 1 ] / Math.PI, e[ 2 ] / Math.PI ],
+				3 * v
+			);
 
 		}
 
@@ -297,7 +306,10 @@ async function addCharacterAndSpheres(): Promise<void> {
 	const count = Number( query.get( 'spheres' ) ?? 3 );
 	for ( let i = 0; i < count; i ++ ) {
 
-		const sphere = new THREE.Mesh( new THREE.SphereGeometry( 0.6, count > 10 ? 16 : 32, count > 10 ? 8 : 16 ), new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
+		const sphere = new THREE.Mesh(
+			new THREE.SphereGeometry( 0.6, count > 10 ? 16 : 32, count > 10 ? 8 : 16 ),
+			new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } )
+		);
 		spheres.push( sphere );
 		scene.add( sphere );
 		lit.push( sphere );
@@ -333,7 +345,10 @@ async function addPanorama( url: string, x: number, z: number, name = url.split(
 function mapPoint( clientX: number, clientY: number ): THREE.Vector3 | null {
 
 	const raycaster = new THREE.Raycaster();
-	raycaster.setFromCamera( new THREE.Vector2( ( clientX / window.innerWidth ) * 2 - 1, - ( clientY / window.innerHeight ) * 2 + 1 ), camera );
+	raycaster.setFromCamera(
+		new THREE.Vector2( ( clientX / window.innerWidth ) * 2 - 1, - ( clientY / window.innerHeight ) * 2 + 1 ),
+		camera
+	);
 	return raycaster.intersectObject( map, false )[ 0 ]?.point ?? null;
 
 }
@@ -409,7 +424,12 @@ function frame( timestamp: number ): void {
 	hint = mesh!.interpolate( p.x, p.y, p.z, indices, weights, hint );
 	const inside = indices[ 2 ] !== indices[ 0 ];
 	const position = current.geometry.getAttribute( 'position' ) as THREE.BufferAttribute;
-	for ( let k = 0; k < 3; k ++ ) position.setXYZ( k, ...( ground( indices[ inside ? k : Math.min( k, 1 ) ] ) as [ number, number, number ] ) );
+	for ( let k = 0; k < 3; k ++ ) {
+
+		position.setXYZ( k, ...( ground( indices[ inside ? k : Math.min( k, 1 ) ] ) as [ number, number, number ] ) );
+
+	}
+
 	position.needsUpdate = true;
 	current.visible = currentEdges.visible = triangles.visible = params.triangles;
 
@@ -439,7 +459,9 @@ function frame( timestamp: number ): void {
 function characterScreenBox(): number[] {
 
 	const box = new THREE.Box3().setFromObject( fox! );
-	const points = [ 0, 1, 2, 3, 4, 5, 6, 7 ].map( ( i ) => new THREE.Vector3( i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z ).project( camera ) );
+	const points = [ 0, 1, 2, 3, 4, 5, 6, 7 ].map( ( i ) => new THREE.Vector3(
+		i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z
+	).project( camera ) );
 	const xs = points.map( ( v ) => ( v.x + 1 ) / 2 * window.innerWidth ), ys = points.map( ( v ) => ( 1 - v.y ) / 2 * window.innerHeight );
 	return [ Math.min( ...xs ), Math.min( ...ys ), Math.max( ...xs ), Math.max( ...ys ) ];
 
@@ -454,7 +476,13 @@ window.addEventListener( 'resize', () => {
 
 } );
 
-Object.assign( window, { __demo: report, __kyoto: { addPanorama, characterScreenBox, layoutNames: () => layouts.map( ( l ) => l.name ), panoramas, camera, controls, get fox() { return fox; }, get volume() { return volume; } } } );
+Object.assign( window, {
+	__demo: report,
+	__kyoto: {
+		addPanorama, characterScreenBox, layoutNames: () => layouts.map( ( l ) => l.name ), panoramas, camera, controls,
+		get fox() { return fox; }, get volume() { return volume; }
+	}
+} );
 
 async function start(): Promise<void> {
 

@@ -12,7 +12,10 @@ export function createBasicRoom(): { room: THREE.Group; lamp: THREE.PointLight }
 	const wall = ( color: number ) => new THREE.MeshStandardMaterial( { color, roughness: 0.9, side: THREE.BackSide } );
 	// BoxGeometry groups: +x, −x, +y, −y, +z, −z.
 	// Grey floor and ceiling, so the coloured walls dominate the bounce light, as in the paper's figures.
-	const box = new THREE.Mesh( new THREE.BoxGeometry( 4, 3, 4 ), [ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xaaaaaa ), wall( 0x888888 ), wall( 0xcccccc ), wall( 0x2040e0 ) ] );
+	const box = new THREE.Mesh(
+		new THREE.BoxGeometry( 4, 3, 4 ),
+		[ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xaaaaaa ), wall( 0x888888 ), wall( 0xcccccc ), wall( 0x2040e0 ) ]
+	);
 	box.position.y = 1.5;
 	box.name = 'room';
 	const lamp = new THREE.PointLight( 0xfff2e0, 12, 0, 2 );

@@ -61,7 +61,11 @@ export function createKyotoMap(): THREE.Mesh {
 	canvas.height = MAP_SIZE.depth * scale;
 	const g = canvas.getContext( '2d' )!;
 	const X = ( x: number ) => ( x + MAP_SIZE.width / 2 ) * scale, Z = ( z: number ) => ( z + MAP_SIZE.depth / 2 ) * scale;
-	const rect = ( x0: number, z0: number, x1: number, z1: number, color: string ) => { g.fillStyle = color; g.fillRect( X( x0 ), Z( z0 ), ( x1 - x0 ) * scale, ( z1 - z0 ) * scale ); };
+	const rect = ( x0: number, z0: number, x1: number, z1: number, color: string ) => {
+
+		g.fillStyle = color; g.fillRect( X( x0 ), Z( z0 ), ( x1 - x0 ) * scale, ( z1 - z0 ) * scale );
+
+	};
 
 	rect( - 22, - 17, 22, 17, '#e7dfd0' );
 	let seed = 7;
@@ -78,6 +82,7 @@ export function createKyotoMap(): THREE.Mesh {
 		g.strokeStyle = '#ffffff'; g.lineWidth = width * scale; g.beginPath(); g.moveTo( X( x0 ), Z( z0 ) ); g.lineTo( X( x1 ), Z( z1 ) ); g.stroke();
 
 	};
+
 	for ( const x of [ - 20, - 12, - 4, 4 ] ) street( x, - 17, x, 17, 0.4 ); // lanes
 	for ( const z of [ - 16, - 8, 0, 8, 16 ] ) { street( - 22, z, 13.2, z, 0.4 ); street( 18.8, z, 22, z, 0.4 ); }
 	for ( const x of [ - 16, - 8, 0, 8 ] ) street( x, - 17, x, 17, x === 0 ? 1.6 : 1.1 ); // streets
@@ -91,7 +96,10 @@ export function createKyotoMap(): THREE.Mesh {
 	const texture = new THREE.CanvasTexture( canvas );
 	texture.colorSpace = THREE.SRGBColorSpace;
 	texture.anisotropy = 4;
-	const mesh = new THREE.Mesh( new THREE.PlaneGeometry( MAP_SIZE.width, MAP_SIZE.depth ), new THREE.MeshBasicMaterial( { map: texture, toneMapped: false } ) );
+	const mesh = new THREE.Mesh(
+		new THREE.PlaneGeometry( MAP_SIZE.width, MAP_SIZE.depth ),
+		new THREE.MeshBasicMaterial( { map: texture, toneMapped: false } )
+	);
 	mesh.rotation.x = - Math.PI / 2; // the canvas top edge is north (−z)
 	mesh.name = 'map';
 	return mesh;
@@ -118,7 +126,8 @@ export function derivePanorama( source: THREE.DataTexture, yaw: number, gain: nu
 			for ( let c = 0; c < 3; c ++ ) {
 
 				const value = data[ from + c ];
-				out[ to + c ] = plain ? value : half ? THREE.DataUtils.toHalfFloat( THREE.DataUtils.fromHalfFloat( value ) * gain[ c ] ) : value * gain[ c ];
+				out[ to + c ] = plain ? value :
+					half ? THREE.DataUtils.toHalfFloat( THREE.DataUtils.fromHalfFloat( value ) * gain[ c ] ) : value * gain[ c ];
 
 			}
 

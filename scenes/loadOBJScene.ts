@@ -191,7 +191,9 @@ export async function loadOBJScene( options: OBJSceneOptions ): Promise<OBJScene
 }
 
 /** Fetches a text file with download progress; a 404 (or an HTML fallback page) is a missing file. */
-async function fetchText( url: string, onProgress: ( fraction: number ) => void, missing: ( file: string, why: string ) => Error ): Promise<string> {
+async function fetchText(
+	url: string, onProgress: ( fraction: number ) => void, missing: ( file: string, why: string ) => Error
+): Promise<string> {
 
 	let response: Response;
 	try {
@@ -274,7 +276,8 @@ export function createSky( { zenith, horizon, ground, intensity, radius = 200 }:
 	const geometry = new THREE.SphereGeometry( radius, 48, 24 );
 	const normals = geometry.getAttribute( 'normal' );
 	const colors = new Float32Array( 3 * normals.count );
-	const top = new THREE.Color( zenith ), middle = new THREE.Color( horizon ), bottom = new THREE.Color( ground ), color = new THREE.Color();
+	const top = new THREE.Color( zenith ), middle = new THREE.Color( horizon ), bottom = new THREE.Color( ground ),
+		color = new THREE.Color();
 	for ( let i = 0; i < normals.count; i ++ ) {
 
 		const y = normals.getY( i );
@@ -284,7 +287,10 @@ export function createSky( { zenith, horizon, ground, intensity, radius = 200 }:
 	}
 
 	geometry.setAttribute( 'color', new THREE.BufferAttribute( colors, 3 ) );
-	const sky = new THREE.Mesh( geometry, new THREE.MeshBasicMaterial( { vertexColors: true, side: THREE.BackSide, depthWrite: false, fog: false } ) );
+	const sky = new THREE.Mesh(
+		geometry,
+		new THREE.MeshBasicMaterial( { vertexColors: true, side: THREE.BackSide, depthWrite: false, fog: false } )
+	);
 	sky.name = 'sky';
 	sky.renderOrder = - 1;
 	return sky;
@@ -310,13 +316,17 @@ export interface StaticSunOptions {
  * first probe capture), and reused by every capture and frame; it is drawn again after a lost
  * WebGL context comes back.
  */
-export function addStaticSun( app: SceneHost, { direction, color, intensity, extent, mapSize = 2048 }: StaticSunOptions ): THREE.DirectionalLight {
+export function addStaticSun(
+	app: SceneHost, { direction, color, intensity, extent, mapSize = 2048 }: StaticSunOptions
+): THREE.DirectionalLight {
 
 	const sun = new THREE.DirectionalLight( color, intensity );
 	sun.position.copy( direction ).multiplyScalar( 2 * extent );
 	sun.castShadow = true;
 	sun.shadow.mapSize.set( mapSize, mapSize );
-	Object.assign( sun.shadow.camera, { left: - extent, right: extent, top: extent, bottom: - extent, near: 0.1 * extent, far: 4 * extent } );
+	Object.assign( sun.shadow.camera, {
+		left: - extent, right: extent, top: extent, bottom: - extent, near: 0.1 * extent, far: 4 * extent
+	} );
 	sun.shadow.bias = - 0.0005;
 	sun.shadow.normalBias = 0.03;
 	app.scene.add( sun, sun.target );

@@ -50,7 +50,10 @@ export async function buildSibenik( app: SceneHost ): Promise<void> {
 
 		const lamp = new THREE.PointLight( 0xffb45a, intensity, 0, 2 );
 		lamp.position.set( x, y, z );
-		const bulb = new THREE.Mesh( new THREE.SphereGeometry( 0.12, 12, 6 ), new THREE.MeshBasicMaterial( { color: new THREE.Color( 0xffb45a ).multiplyScalar( 4 ) } ) );
+		const bulb = new THREE.Mesh(
+			new THREE.SphereGeometry( 0.12, 12, 6 ),
+			new THREE.MeshBasicMaterial( { color: new THREE.Color( 0xffb45a ).multiplyScalar( 4 ) } )
+		);
 		bulb.position.copy( lamp.position );
 		app.scene.add( lamp, bulb );
 

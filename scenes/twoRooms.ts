@@ -65,7 +65,10 @@ export function createTwoRooms(): TwoRooms {
 	const centreA = - ( LENGTH + HALF ) / 2, centreB = ( LENGTH + HALF ) / 2;
 	for ( const [ x, color, name ] of [ [ centreA, 0xff0000, 'A' ], [ centreB, 0x0000ff, 'B' ] ] as const ) {
 
-		const panel = new THREE.Mesh( new THREE.PlaneGeometry( 1.6, 1.6 ), new THREE.MeshStandardMaterial( { color: 0x000000, emissive: color, emissiveIntensity: 2 } ) );
+		const panel = new THREE.Mesh(
+			new THREE.PlaneGeometry( 1.6, 1.6 ),
+			new THREE.MeshStandardMaterial( { color: 0x000000, emissive: color, emissiveIntensity: 2 } )
+		);
 		panel.rotation.x = Math.PI / 2; // facing down
 		panel.position.set( x, HEIGHT - 0.02, 0 );
 		panel.name = `panel ${name}`;

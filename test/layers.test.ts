@@ -71,7 +71,9 @@ function resolveImport( file: string, specifier: string ): string {
 }
 
 /** Every relative import that runs against the layers, as "from → to" lines. */
-function layerViolations( files: readonly string[], allowed: Record<string, readonly string[]>, imports: ( file: string ) => string[] ): string[] {
+function layerViolations(
+	files: readonly string[], allowed: Record<string, readonly string[]>, imports: ( file: string ) => string[]
+): string[] {
 
 	const violations: string[] = [];
 	for ( const file of files ) {

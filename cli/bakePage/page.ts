@@ -91,7 +91,8 @@ const api: BakePageApi = {
 			}
 
 			const light = object as THREE.Light;
-			if ( ! light.isLight || ( light as THREE.AmbientLight ).isAmbientLight || ( light as THREE.HemisphereLight ).isHemisphereLight ) return;
+			if ( ! light.isLight || ( light as THREE.AmbientLight ).isAmbientLight ||
+				( light as THREE.HemisphereLight ).isHemisphereLight ) return;
 			lights ++;
 			const caster = light as THREE.DirectionalLight | THREE.SpotLight | THREE.PointLight;
 			if ( ! caster.shadow ) return;
@@ -109,7 +110,9 @@ const api: BakePageApi = {
 		progress( 'loading', 1, 1 );
 
 		const count = request.positions.length / 3;
-		const capturer = new ProbeCapturer( renderer, { resolution: request.resolution, near: request.near, far: request.far, type: THREE.HalfFloatType } );
+		const capturer = new ProbeCapturer( renderer, {
+			resolution: request.resolution, near: request.near, far: request.far, type: THREE.HalfFloatType
+		} );
 		const target = new Float32Array( 27 * count );
 		// ProbeCapturer reports probes as submitted; the GPU finishes them at the read-back that ends
 		// each call. Capturing in chunks (at most ~100 read-backs, never more probes than one

@@ -117,7 +117,10 @@ function figures( sh: Float32Array, nave: number[], probes: number, pass: Bounce
 
 	}
 
-	return { pass: pass.pass, meanL00: mean( all, l00 ), naveL00: mean( nave, l00 ), naveE, captureMs: pass.captureMs, lightingMs: pass.lightingMs };
+	return {
+		pass: pass.pass, meanL00: mean( all, l00 ), naveL00: mean( nave, l00 ), naveE,
+		captureMs: pass.captureMs, lightingMs: pass.lightingMs
+	};
 
 }
 
@@ -125,7 +128,10 @@ const grey = ( v: RGB ) => ( v[ 0 ] + v[ 1 ] + v[ 2 ] ) / 3;
 const percent = ( v: number ) => `${v >= 0 ? '+' : ''}${( 100 * v ).toFixed( 1 )} %`;
 const rgb = ( v: RGB ) => v.map( ( x ) => x.toFixed( 3 ) ).join( ' / ' );
 
-function markdown( result: Record<string, unknown> & { passes: PassFigures[]; standIn: PassFigures; options: Options; scene: LoadedBounceScene; naveProbes: string[]; run: { staticMeshes: number; vertices: number; totalMs: number; warmUpMs: number; standInTotalMs: number } } ): string {
+function markdown( result: Record<string, unknown> & {
+	passes: PassFigures[]; standIn: PassFigures; options: Options; scene: LoadedBounceScene; naveProbes: string[];
+	run: { staticMeshes: number; vertices: number; totalMs: number; warmUpMs: number; standInTotalMs: number };
+} ): string {
 
 	const { passes, standIn, options, scene, run } = result;
 	const lines: string[] = [];
@@ -208,7 +214,10 @@ async function main(): Promise<number> {
 		const nave = scene.layout.names.map( ( name, i ) => ( name.startsWith( 'nave' ) ? i : - 1 ) ).filter( ( i ) => i >= 0 );
 		if ( nave.length === 0 ) throw new Error( 'the layout has no probes named nave…' );
 		const probes = scene.layout.positions.length / 3;
-		const request: BounceRequest = { resolution: options.resolution, near: config.near, far: config.far, bounces: options.bounces, standIn: false, output: options.output };
+		const request: BounceRequest = {
+			resolution: options.resolution, near: config.near, far: config.far, bounces: options.bounces, standIn: false,
+			output: options.output
+		};
 
 		log( `bounces 0..${options.bounces}, stand-in off` );
 		const answer = await call( 'run', request );
@@ -226,7 +235,10 @@ async function main(): Promise<number> {
 			capture: { resolution: options.resolution, near: config.near, far: config.far, type: 'HalfFloat', solidAngle: 'exact' },
 			passes,
 			standIn,
-			run: { staticMeshes: answer.staticMeshes, vertices: answer.vertices, totalMs: answer.totalMs, warmUpMs: answer.warmUpMs, standInTotalMs: ordinary.totalMs },
+			run: {
+				staticMeshes: answer.staticMeshes, vertices: answer.vertices, totalMs: answer.totalMs, warmUpMs: answer.warmUpMs,
+				standInTotalMs: ordinary.totalMs
+			},
 			environment: { browser: browserVersion, node: process.version, cpus: `${cpus().length} × ${cpus()[ 0 ]?.model ?? '?'}` },
 			date: new Date().toISOString(),
 			runMs: performance.now() - runStart,

@@ -130,7 +130,9 @@ export function gridValidSamples( grid: GridInterpolator, usable: ArrayLike<bool
  * Measures one layout against the truth at the samples: one row of the result. With `subset`
  * (sample indices, fewer than all), also its errors over those samples alone.
  */
-export function evaluateLayout( layout: EvaluatedLayout, samples: ArrayLike<number>, trueSH: ArrayLike<number>, subset?: ArrayLike<number> ): LayoutResult {
+export function evaluateLayout(
+	layout: EvaluatedLayout, samples: ArrayLike<number>, trueSH: ArrayLike<number>, subset?: ArrayLike<number>
+): LayoutResult {
 
 	const interpolator = interpolatorOf( layout );
 	const predicted = predictSH( interpolator, layout.sh, samples );
@@ -236,7 +238,8 @@ export function verdictOf( layouts: readonly LayoutResult[], paper: PaperFigures
 	const autos = layouts.filter( ( row ) => row.kind === 'auto' ).sort( ( a, b ) => a.probes - b.probes );
 	const within = autos.filter( ( row ) => row.probes <= budget );
 	const largest = within.length > 0 ? within[ within.length - 1 ].probes : - 1;
-	const atLargest = within.filter( ( row ) => row.probes === largest ).sort( ( a, b ) => ( a.denseMeanError ?? Infinity ) - ( b.denseMeanError ?? Infinity ) );
+	const atLargest = within.filter( ( row ) => row.probes === largest )
+		.sort( ( a, b ) => ( a.denseMeanError ?? Infinity ) - ( b.denseMeanError ?? Infinity ) );
 	const auto = atLargest.length > 0 ? atLargest[ 0 ] : null;
 	const hand = layouts.find( ( row ) => row.kind === 'hand' ) ?? null;
 	const pick = ( row: LayoutResult ) => ( { name: row.name, probes: row.probes, meanError: row.meanError, p95Error: row.p95Error } );

@@ -26,7 +26,10 @@ export interface ExperimentResult {
 		seed: number; probes: number; fromGrid: number; fromVertices: number; captureMs: number; reduceMs: number; selectMs: number;
 		/** Mean error of each automatic cut over the dense set itself (what the reduction minimised). */
 		denseMeanError: Record<string, number>;
-		/** Largest |SH difference| between an automatic layout's own capture and the dense capture at the same points, relative to the largest L00. */
+		/**
+		 * Largest |SH difference| between an automatic layout's own capture and the dense capture at the same points,
+		 * relative to the largest L00.
+		 */
 		recaptureMaxDifference: number;
 	};
 	capture: { resolution: number; near: number; far: number; type: string; solidAngle: string };
@@ -181,8 +184,10 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		const values = result.layouts.map( ( row ) => row[ key ] );
 		const yMin = Math.pow( 10, Math.floor( Math.log10( Math.min( ...values ) * 0.85 ) * 4 ) / 4 );
 		const yMax = Math.pow( 10, Math.ceil( Math.log10( Math.max( ...values ) * 1.15 ) * 4 ) / 4 );
-		const sx = ( n: number ) => x0 + ( Math.log10( n ) - Math.log10( xMin ) ) / ( Math.log10( xMax ) - Math.log10( xMin ) ) * panelWidth;
-		const sy = ( e: number ) => y0 + panelHeight - ( Math.log10( e ) - Math.log10( yMin ) ) / ( Math.log10( yMax ) - Math.log10( yMin ) ) * panelHeight;
+		const sx = ( n: number ) => x0 +
+			( Math.log10( n ) - Math.log10( xMin ) ) / ( Math.log10( xMax ) - Math.log10( xMin ) ) * panelWidth;
+		const sy = ( e: number ) => y0 + panelHeight -
+			( Math.log10( e ) - Math.log10( yMin ) ) / ( Math.log10( yMax ) - Math.log10( yMin ) ) * panelHeight;
 
 		// Axes and grid lines.
 		out.push( `<rect x="${x0}" y="${y0}" width="${panelWidth}" height="${panelHeight}" fill="none" stroke="#333" stroke-width="1"/>` );

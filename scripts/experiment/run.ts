@@ -112,7 +112,12 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 	const notOpen = ( positions: ArrayLike<number> ) => {
 
 		let n = 0;
-		for ( let i = 0; i < positions.length; i += 3 ) if ( open.classify( positions[ i ], positions[ i + 1 ], positions[ i + 2 ] ) !== OPEN ) n ++;
+		for ( let i = 0; i < positions.length; i += 3 ) {
+
+			if ( open.classify( positions[ i ], positions[ i + 1 ], positions[ i + 2 ] ) !== OPEN ) n ++;
+
+		}
+
 		return n;
 
 	};
@@ -171,7 +176,14 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 	log( `mean-greedy selection: ${start.length} → ${greedy.order.length} in ${( selectMs / 1000 ).toFixed( 1 )} s` );
 	const perProbeMs = denseCapture.ms / kept.length;
 	let recaptureDifference = 0, largestL00 = 0;
-	for ( let i = 0; i < denseCapture.sh.length; i += 27 ) largestL00 = Math.max( largestL00, Math.abs( denseCapture.sh[ i ] ), Math.abs( denseCapture.sh[ i + 1 ] ), Math.abs( denseCapture.sh[ i + 2 ] ) );
+	for ( let i = 0; i < denseCapture.sh.length; i += 27 ) {
+
+		largestL00 = Math.max(
+			largestL00, Math.abs( denseCapture.sh[ i ] ), Math.abs( denseCapture.sh[ i + 1 ] ), Math.abs( denseCapture.sh[ i + 2 ] )
+		);
+
+	}
+
 	const denseMeanError: Record<string, number> = {};
 	const judged = Math.max( ...autoCounts.filter( ( n ) => n <= budget ), - 1 );
 	const methods: [ AutoMethod, Uint32Array, ( count: number ) => number ][] = [
@@ -189,7 +201,12 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 			if ( count === judged ) {
 
 				const own = await session.capture( positions, capture, `automatic ${count} (${method})` );
-				for ( let i = 0; i < sh.length; i ++ ) recaptureDifference = Math.max( recaptureDifference, Math.abs( own.sh[ i ] - sh[ i ] ) / largestL00 );
+				for ( let i = 0; i < sh.length; i ++ ) {
+
+					recaptureDifference = Math.max( recaptureDifference, Math.abs( own.sh[ i ] - sh[ i ] ) / largestL00 );
+
+				}
+
 				sh = own.sh;
 				captureMs = own.ms;
 				captureMsEstimated = false;
@@ -215,7 +232,10 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 		const plain = ( array: ArrayLike<number> ) => Array.from( array, ( v ) => Math.fround( v ) );
 		writeFileSync( join( out, `${options.scene}.captures.json` ), JSON.stringify( {
 			truth: { positions: plain( truth.positions ), sh: plain( truthCapture.sh ) },
-			dense: { positions: plain( densePositions ), sh: plain( denseCapture.sh ), reduceProbesOrder: Array.from( reduction.order ), meanGreedyOrder: Array.from( greedy.order ) },
+			dense: {
+				positions: plain( densePositions ), sh: plain( denseCapture.sh ),
+				reduceProbesOrder: Array.from( reduction.order ), meanGreedyOrder: Array.from( greedy.order )
+			},
 			layouts: layouts.filter( ( layout ) => layout.kind !== 'auto' && layout.kind !== 'dense' && ! ( layout.kind === 'grid' && layout.interpolation === 'tetrahedral' ) ).map( ( layout ) => ( { name: layout.name, positions: plain( layout.positions ), sh: plain( layout.sh ) } ) ),
 		} ) );
 
@@ -226,7 +246,9 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 	layouts.sort( ( a, b ) => order( a ) - order( b ) || a.positions.length - b.positions.length );
 	// Where the paper's grid is not handicapped: samples whose grid cell has all its probes in open space.
 	const paperGrid = new GridInterpolator( box.min, box.max, config.paper.gridCounts );
-	const usable = Array.from( { length: paperGrid.probeCount }, ( _, p ) => open.classify( paperGrid.positions[ 3 * p ], paperGrid.positions[ 3 * p + 1 ], paperGrid.positions[ 3 * p + 2 ] ) === OPEN );
+	const usable = Array.from( { length: paperGrid.probeCount }, ( _, p ) => open.classify(
+		paperGrid.positions[ 3 * p ], paperGrid.positions[ 3 * p + 1 ], paperGrid.positions[ 3 * p + 2 ]
+	) === OPEN );
 	const gridValid = gridValidSamples( paperGrid, usable, truth.positions );
 	log( `${gridValid.length} of ${options.samples} samples have all their ${config.paper.gridCounts.join( 'x' )} grid probes in open space` );
 	const rows: LayoutResult[] = layouts.map( ( layout ) => evaluateLayout( layout, truth.positions, truthCapture.sh, gridValid ) );
@@ -239,17 +261,21 @@ async function measure( session: ExperimentSession, scene: Awaited<ReturnType<Ex
 		verdict: verdictOf( rows, config.paper, gridValid.length ),
 		paper: config.paper,
 		groundTruth: {
-			seed: options.seed, region: { min: Array.from( box.min ), max: Array.from( box.max ) }, minDistance: config.minDistance, maxSky: config.maxSky,
-			drawn: truth.drawn, rejectedNear: truth.near, rejectedInside: truth.inside, rejectedOutside: truth.outside, captureMs: truthCapture.ms, normals: 26,
+			seed: options.seed, region: { min: Array.from( box.min ), max: Array.from( box.max ) },
+			minDistance: config.minDistance, maxSky: config.maxSky,
+			drawn: truth.drawn, rejectedNear: truth.near, rejectedInside: truth.inside, rejectedOutside: truth.outside,
+			captureMs: truthCapture.ms, normals: 26,
 			gridValidSamples: gridValid.length,
 		},
 		dense: {
-			seed: options.denseSeed, probes: kept.length, fromGrid, fromVertices: kept.length - fromGrid, captureMs: denseCapture.ms, reduceMs, selectMs,
+			seed: options.denseSeed, probes: kept.length, fromGrid, fromVertices: kept.length - fromGrid,
+			captureMs: denseCapture.ms, reduceMs, selectMs,
 			denseMeanError, recaptureMaxDifference: recaptureDifference,
 		},
 		capture: { ...capture, type: 'HalfFloat', solidAngle: 'exact' },
 		environment: {
-			browser: session.browserVersion, renderer: String( scene.info.renderer ), three: String( scene.info.three ), node: process.version,
+			browser: session.browserVersion, renderer: String( scene.info.renderer ), three: String( scene.info.three ),
+			node: process.version,
 			cpus: `${cpus().length} × ${cpus()[ 0 ]?.model ?? '?'}`, date: new Date().toISOString(), triangles: Number( scene.info.triangles ),
 		},
 		runMs: performance.now() - runStart,

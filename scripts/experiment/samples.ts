@@ -163,7 +163,8 @@ export class OpenSpaceTest {
 	/** Index of the nearest triangle the ray o + t·d (t > 0) hits, or −1. */
 	firstHit( ox: number, oy: number, oz: number, dx: number, dy: number, dz: number ): number {
 
-		const bvh = this.bvh, bounds = bvh.nodeBounds, right = bvh.rightOrStart, counts = bvh.nodeTriangleCounts, order = bvh.order, stack = this.stack;
+		const bvh = this.bvh, bounds = bvh.nodeBounds, right = bvh.rightOrStart, counts = bvh.nodeTriangleCounts, order = bvh.order,
+			stack = this.stack;
 		if ( counts.length === 0 ) return - 1;
 		const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
 		let best = - 1, bestT = Infinity, top = 0;
@@ -243,7 +244,9 @@ export interface OpenSpaceSamples {
  * give the same points.
  * @throws Error when fewer than `count` are found in `maxDraws` draws.
  */
-export function sampleOpenSpace( classifier: PointClassifier, box: Box, count: number, seed: number, maxDraws = 200 * count ): OpenSpaceSamples {
+export function sampleOpenSpace(
+	classifier: PointClassifier, box: Box, count: number, seed: number, maxDraws = 200 * count
+): OpenSpaceSamples {
 
 	const random = mulberry32( seed );
 	const positions = new Float64Array( 3 * count );
@@ -301,14 +304,18 @@ export function jitteredGrid( box: Box, spacing: number, jitter: number, seed: n
  * for double-sided ones) — not the vertex normal attribute, which points out of a room drawn
  * from inside (`BackSide`) — then kept inside `box`.
  */
-export function vertexCandidates( triangles: ArrayLike<number>, sides: ArrayLike<number>, box: Box, offset: number, minSpacing: number ): Float64Array {
+export function vertexCandidates(
+	triangles: ArrayLike<number>, sides: ArrayLike<number>, box: Box, offset: number, minSpacing: number
+): Float64Array {
 
 	const positions: number[] = [], normals: number[] = [];
 	for ( let t = 0; t < sides.length; t ++ ) {
 
 		const k = 9 * t;
-		const e1x = triangles[ k + 3 ] - triangles[ k ], e1y = triangles[ k + 4 ] - triangles[ k + 1 ], e1z = triangles[ k + 5 ] - triangles[ k + 2 ];
-		const e2x = triangles[ k + 6 ] - triangles[ k ], e2y = triangles[ k + 7 ] - triangles[ k + 1 ], e2z = triangles[ k + 8 ] - triangles[ k + 2 ];
+		const e1x = triangles[ k + 3 ] - triangles[ k ], e1y = triangles[ k + 4 ] - triangles[ k + 1 ],
+			e1z = triangles[ k + 5 ] - triangles[ k + 2 ];
+		const e2x = triangles[ k + 6 ] - triangles[ k ], e2y = triangles[ k + 7 ] - triangles[ k + 1 ],
+			e2z = triangles[ k + 8 ] - triangles[ k + 2 ];
 		const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
 		if ( ! ( nx * nx + ny * ny + nz * nz > 0 ) ) continue;
 		const signs = sides[ t ] === 0 ? [ 1, - 1 ] : [ sides[ t ] ];
@@ -316,7 +323,9 @@ export function vertexCandidates( triangles: ArrayLike<number>, sides: ArrayLike
 
 			const x = triangles[ k + 3 * c ], y = triangles[ k + 3 * c + 1 ], z = triangles[ k + 3 * c + 2 ];
 			// Only corners that can land in the box (a loose test; the exact one follows).
-			if ( x < box.min[ 0 ] - offset || x > box.max[ 0 ] + offset || y < box.min[ 1 ] - offset || y > box.max[ 1 ] + offset || z < box.min[ 2 ] - offset || z > box.max[ 2 ] + offset ) continue;
+			if ( x < box.min[ 0 ] - offset || x > box.max[ 0 ] + offset ||
+				y < box.min[ 1 ] - offset || y > box.max[ 1 ] + offset ||
+				z < box.min[ 2 ] - offset || z > box.max[ 2 ] + offset ) continue;
 			positions.push( x, y, z );
 			normals.push( s * nx, s * ny, s * nz );
 
@@ -338,7 +347,9 @@ export function vertexCandidates( triangles: ArrayLike<number>, sides: ArrayLike
 }
 
 /** Keeps the points the classifier calls {@link OPEN}; returns them and the per-class counts. */
-export function keepOpen( classifier: PointClassifier, points: ArrayLike<number> ): { positions: Float64Array; near: number; inside: number; outside: number } {
+export function keepOpen(
+	classifier: PointClassifier, points: ArrayLike<number>
+): { positions: Float64Array; near: number; inside: number; outside: number } {
 
 	const out: number[] = [];
 	let near = 0, inside = 0, outside = 0;

@@ -168,13 +168,27 @@ function selfTest( bvh: TriangleBVH ): void {
 
 	const raycaster = new THREE.Raycaster();
 	const meshes: THREE.Mesh[] = [];
-	bvh.soup.object.traverse( ( child ) => { if ( ( child as THREE.Mesh ).isMesh ) { const m = child as THREE.Mesh; ( Array.isArray( m.material ) ? m.material : [ m.material ] ).forEach( ( material ) => { material.side = THREE.DoubleSide; } ); meshes.push( m ); } } );
+	bvh.soup.object.traverse( ( child ) => {
+
+		if ( ( child as THREE.Mesh ).isMesh ) {
+
+			const m = child as THREE.Mesh;
+			( Array.isArray( m.material ) ? m.material : [ m.material ] ).forEach( ( material ) => { material.side = THREE.DoubleSide; } );
+			meshes.push( m );
+
+		}
+
+	} );
 	const box = new THREE.Box3().setFromObject( bvh.soup.object );
 	const directions = sphereDirections( 200 );
 	let worst = 0;
 	for ( let i = 0; i < directions.length; i ++ ) {
 
-		const origin = new THREE.Vector3( THREE.MathUtils.lerp( box.min.x, box.max.x, ( i * 0.618 ) % 1 ), THREE.MathUtils.lerp( box.min.y, box.max.y, ( i * 0.382 ) % 1 ), THREE.MathUtils.lerp( box.min.z, box.max.z, ( i * 0.271 ) % 1 ) );
+		const origin = new THREE.Vector3(
+			THREE.MathUtils.lerp( box.min.x, box.max.x, ( i * 0.618 ) % 1 ),
+			THREE.MathUtils.lerp( box.min.y, box.max.y, ( i * 0.382 ) % 1 ),
+			THREE.MathUtils.lerp( box.min.z, box.max.z, ( i * 0.271 ) % 1 )
+		);
 		raycaster.set( origin, new THREE.Vector3( ...directions[ i ] ) );
 		const three = raycaster.intersectObjects( meshes, false )[ 0 ]?.distance ?? Infinity;
 		const ours = bvh.raycastAll( origin.toArray(), directions[ i ] )[ 0 ]?.t ?? Infinity;

@@ -84,7 +84,13 @@ export class TriangleBVH {
 		this.boxes = new Float64Array( 6 * maxNodes );
 		this.nodes = new Int32Array( 3 * maxNodes );
 		const centroids = new Float64Array( 3 * count );
-		for ( let t = 0; t < count; t ++ ) for ( let k = 0; k < 3; k ++ ) centroids[ 3 * t + k ] = ( soup.positions[ 9 * t + k ] + soup.positions[ 9 * t + 3 + k ] + soup.positions[ 9 * t + 6 + k ] ) / 3;
+		for ( let t = 0; t < count; t ++ ) for ( let k = 0; k < 3; k ++ ) {
+
+			centroids[ 3 * t + k ] =
+				( soup.positions[ 9 * t + k ] + soup.positions[ 9 * t + 3 + k ] + soup.positions[ 9 * t + 6 + k ] ) / 3;
+
+		}
+
 		this.build( 0, count, centroids );
 
 	}
@@ -122,7 +128,8 @@ export class TriangleBVH {
 
 		}
 
-		const slice = Array.from( this.order.subarray( start, end ) ).sort( ( a, b ) => centroids[ 3 * a + axis ] - centroids[ 3 * b + axis ] );
+		const slice = Array.from( this.order.subarray( start, end ) )
+			.sort( ( a, b ) => centroids[ 3 * a + axis ] - centroids[ 3 * b + axis ] );
 		this.order.set( slice, start );
 		const middle = ( start + end ) >> 1;
 		const left = this.build( start, middle, centroids );
@@ -193,13 +200,16 @@ export class TriangleBVH {
 
 			const node = stack.pop() as number;
 			const b = 6 * node;
-			const cx = Math.max( box[ b ] - x, 0, x - box[ b + 3 ] ), cy = Math.max( box[ b + 1 ] - y, 0, y - box[ b + 4 ] ), cz = Math.max( box[ b + 2 ] - z, 0, z - box[ b + 5 ] );
+			const cx = Math.max( box[ b ] - x, 0, x - box[ b + 3 ] ), cy = Math.max( box[ b + 1 ] - y, 0, y - box[ b + 4 ] ),
+				cz = Math.max( box[ b + 2 ] - z, 0, z - box[ b + 5 ] );
 			if ( cx * cx + cy * cy + cz * cz >= best ) continue;
 			if ( nodes[ 3 * node ] >= 0 ) { stack.push( nodes[ 3 * node ], nodes[ 3 * node + 1 ] ); continue; }
 			for ( let i = nodes[ 3 * node + 1 ], e = i + nodes[ 3 * node + 2 ]; i < e; i ++ ) {
 
 				const t = this.order[ i ], o = 9 * t;
-				const d = closestPointOnTriangle( x, y, z, p[ o ], p[ o + 1 ], p[ o + 2 ], p[ o + 3 ], p[ o + 4 ], p[ o + 5 ], p[ o + 6 ], p[ o + 7 ], p[ o + 8 ], out );
+				const d = closestPointOnTriangle(
+					x, y, z, p[ o ], p[ o + 1 ], p[ o + 2 ], p[ o + 3 ], p[ o + 4 ], p[ o + 5 ], p[ o + 6 ], p[ o + 7 ], p[ o + 8 ], out
+				);
 				if ( d < best ) { best = d; triangle = t; }
 
 			}

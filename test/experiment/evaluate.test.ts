@@ -34,7 +34,10 @@ function samplesIn( count: number, seed: number ): Float64Array {
 
 function row( name: string, kind: LayoutResult[ 'kind' ], interpolation: LayoutResult[ 'interpolation' ], probes: number, meanError: number, counts?: number[] ): LayoutResult {
 
-	return { name, kind, interpolation, probes, cells: Math.max( 1, probes - 3 ), meanError, p95Error: 2 * meanError, maxError: 3 * meanError, captureMs: probes, probesNotInOpenSpace: 0, ...( counts ? { counts } : {} ) };
+	return {
+		name, kind, interpolation, probes, cells: Math.max( 1, probes - 3 ), meanError, p95Error: 2 * meanError, maxError: 3 * meanError,
+		captureMs: probes, probesNotInOpenSpace: 0, ...( counts ? { counts } : {} )
+	};
 
 }
 
@@ -137,8 +140,14 @@ describe( 'experiment: output', () => {
 
 	const result: ExperimentResult = {
 		scene: 'basic', samples: 500, layouts: ROWS, verdict: verdictOf( ROWS, PAPER ), paper: PAPER,
-		groundTruth: { seed: 1, region: BOX, minDistance: 0.1, maxSky: 1, drawn: 510, rejectedNear: 10, rejectedInside: 0, rejectedOutside: 0, captureMs: 1000, normals: 26, gridValidSamples: 500 },
-		dense: { seed: 2, probes: 700, fromGrid: 690, fromVertices: 10, captureMs: 2000, reduceMs: 100, selectMs: 100, denseMeanError: { 12: 0.38 }, recaptureMaxDifference: 0 },
+		groundTruth: {
+			seed: 1, region: BOX, minDistance: 0.1, maxSky: 1, drawn: 510, rejectedNear: 10, rejectedInside: 0, rejectedOutside: 0,
+			captureMs: 1000, normals: 26, gridValidSamples: 500
+		},
+		dense: {
+			seed: 2, probes: 700, fromGrid: 690, fromVertices: 10, captureMs: 2000, reduceMs: 100, selectMs: 100,
+			denseMeanError: { 12: 0.38 }, recaptureMaxDifference: 0
+		},
 		capture: { resolution: 32, near: 0.02, far: 20, type: 'HalfFloat', solidAngle: 'exact' },
 		environment: { browser: 'Chrome', renderer: 'SwiftShader' }, runMs: 10000,
 	};

@@ -5,7 +5,9 @@ import {
 } from '../../scripts/experiment/samples.js';
 
 /** World triangles (9 floats each) of a box, and its side per triangle. */
-function box( width: number, height: number, depth: number, [ cx, cy, cz ]: number[], side: number, skipFaces: number[] = [] ): { triangles: number[]; sides: number[] } {
+function box(
+	width: number, height: number, depth: number, [ cx, cy, cz ]: number[], side: number, skipFaces: number[] = []
+): { triangles: number[]; sides: number[] } {
 
 	const geometry = new BoxGeometry( width, height, depth ).toNonIndexed();
 	const p = geometry.getAttribute( 'position' );
@@ -136,7 +138,9 @@ describe( 'experiment: point sets', () => {
 		expect( candidates.length / 3 ).toBe( 20 ); // 8 corners × 3 faces, but the 4 moved below the floor (out of the box)
 		for ( let i = 0; i < candidates.length; i += 3 ) {
 
-			expect( Math.max( Math.abs( candidates[ i ] - 1 ), Math.abs( candidates[ i + 1 ] - 0.5 ), Math.abs( candidates[ i + 2 ] - 1 ) ) ).toBeCloseTo( 0.8, 6 );
+			expect( Math.max(
+				Math.abs( candidates[ i ] - 1 ), Math.abs( candidates[ i + 1 ] - 0.5 ), Math.abs( candidates[ i + 2 ] - 1 )
+			) ).toBeCloseTo( 0.8, 6 );
 
 		}
 
@@ -152,7 +156,8 @@ describe( 'experiment: point sets', () => {
 		for ( let i = 0; i < kept.length; i ++ ) for ( let j = 0; j < i; j ++ ) {
 
 			const p = 3 * kept[ i ], q = 3 * kept[ j ];
-			expect( Math.hypot( grid[ p ] - grid[ q ], grid[ p + 1 ] - grid[ q + 1 ], grid[ p + 2 ] - grid[ q + 2 ] ) ).toBeGreaterThanOrEqual( 0.6 );
+			expect( Math.hypot( grid[ p ] - grid[ q ], grid[ p + 1 ] - grid[ q + 1 ], grid[ p + 2 ] - grid[ q + 2 ] ) )
+				.toBeGreaterThanOrEqual( 0.6 );
 
 		}
 

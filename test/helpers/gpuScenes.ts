@@ -146,7 +146,9 @@ export interface Image8 {
  * Renders `scene` to the default framebuffer (so `renderer.outputColorSpace`, sRGB by default, is
  * applied as on a page) and reads it back, top row first.
  */
-export function renderToImage( renderer: THREE.WebGLRenderer, gl: WebGL2RenderingContext, scene: THREE.Scene, camera: THREE.Camera ): Image8 {
+export function renderToImage(
+	renderer: THREE.WebGLRenderer, gl: WebGL2RenderingContext, scene: THREE.Scene, camera: THREE.Camera
+): Image8 {
 
 	const size = renderer.getDrawingBufferSize( new THREE.Vector2() );
 	const width = size.x, height = size.y;
@@ -183,7 +185,12 @@ export function compareImages( a: Image8, b: Image8, threshold = 0 ): { max: num
 export function diffImage( a: Image8, b: Image8, gain = 8 ): Image8 {
 
 	const data = new Uint8Array( a.data.length );
-	for ( let i = 0; i < data.length; i ++ ) data[ i ] = ( i & 3 ) === 3 ? 255 : Math.min( 255, gain * Math.abs( a.data[ i ] - b.data[ i ] ) );
+	for ( let i = 0; i < data.length; i ++ ) {
+
+		data[ i ] = ( i & 3 ) === 3 ? 255 : Math.min( 255, gain * Math.abs( a.data[ i ] - b.data[ i ] ) );
+
+	}
+
 	return { width: a.width, height: a.height, data };
 
 }

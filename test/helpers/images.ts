@@ -26,7 +26,10 @@ export function writePNG( path: string, width: number, height: number, data: Uin
  * A missing golden is written to test/output/<name>.new.png and reported, never created in place:
  * goldens are accepted by a person who looked at them.
  */
-export function compareWithGolden( name: string, goldenPath: string, actual: { width: number; height: number; data: Uint8Array }, limits = { mean: 2, pixelThreshold: 24, fraction: 0.01 } ): { ok: boolean; mean: number; fraction: number; message: string } {
+export function compareWithGolden(
+	name: string, goldenPath: string, actual: { width: number; height: number; data: Uint8Array },
+	limits = { mean: 2, pixelThreshold: 24, fraction: 0.01 }
+): { ok: boolean; mean: number; fraction: number; message: string } {
 
 	if ( ! existsSync( goldenPath ) ) {
 

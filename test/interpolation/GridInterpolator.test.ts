@@ -19,7 +19,8 @@ describe( 'GridInterpolator (the paper\'s 8-probe trilinear baseline)', () => {
 	it( 'reproduces a trilinear field exactly and weights sum to 1', () => {
 
 		// Trilinear interpolation is exact for f = a + bx + cy + dz + exy + fyz + gxz + hxyz.
-		const f = ( x: number, y: number, z: number ) => 0.5 + x - 2 * y + 0.3 * z + 0.7 * x * y - 0.2 * y * z + 0.1 * x * z + 0.05 * x * y * z;
+		const f = ( x: number, y: number, z: number ) => 0.5 + x - 2 * y + 0.3 * z +
+			0.7 * x * y - 0.2 * y * z + 0.1 * x * z + 0.05 * x * y * z;
 		const random = seededRandom( 4 );
 		for ( let q = 0; q < 5000; q ++ ) {
 

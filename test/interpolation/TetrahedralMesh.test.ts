@@ -32,7 +32,9 @@ function insideHullExactly( mesh: TetrahedralMesh, x: number, y: number, z: numb
 
 		const a = 3 * f[ i ], b = 3 * f[ i + 1 ], c = 3 * f[ i + 2 ];
 		// Hull faces are counter-clockwise from outside: the point is outside when det[b−a, c−a, q−a] > 0.
-		if ( orient3d( p[ a ], p[ a + 1 ], p[ a + 2 ], p[ b ], p[ b + 1 ], p[ b + 2 ], p[ c ], p[ c + 1 ], p[ c + 2 ], x, y, z ) < 0 ) return false;
+		if ( orient3d(
+			p[ a ], p[ a + 1 ], p[ a + 2 ], p[ b ], p[ b + 1 ], p[ b + 2 ], p[ c ], p[ c + 1 ], p[ c + 2 ], x, y, z
+		) < 0 ) return false;
 
 	}
 
@@ -113,7 +115,8 @@ describe( 'TetrahedralMesh', () => {
 				let r0 = random(), r1 = random();
 				if ( r0 + r1 > 1 ) { r0 = 1 - r0; r1 = 1 - r1; }
 				const r = [ r0, r1, 1 - r0 - r1 ];
-				const point = [ 0, 1, 2 ].map( ( axis ) => r[ 0 ] * positions[ 3 * face[ 0 ] + axis ] + r[ 1 ] * positions[ 3 * face[ 1 ] + axis ] + r[ 2 ] * positions[ 3 * face[ 2 ] + axis ] );
+				const point = [ 0, 1, 2 ].map( ( axis ) => r[ 0 ] * positions[ 3 * face[ 0 ] + axis ] +
+					r[ 1 ] * positions[ 3 * face[ 1 ] + axis ] + r[ 2 ] * positions[ 3 * face[ 2 ] + axis ] );
 				mesh.barycentric( t, point[ 0 ], point[ 1 ], point[ 2 ], a );
 				mesh.barycentric( u, point[ 0 ], point[ 1 ], point[ 2 ], b );
 				for ( const v of face ) {
@@ -223,7 +226,8 @@ describe( 'TetrahedralMesh', () => {
 
 		const grid = new TetrahedralMesh( gridPoints( 2, 2, 2, 1 ) );
 		const sh = new Float32Array( 27 * 8 );
-		for ( let v = 0; v < 8; v ++ ) for ( let i = 0; i < 27; i ++ ) sh[ 27 * v + i ] = grid.positions[ 3 * v ] * ( i + 1 ); // linear in x
+		// linear in x
+		for ( let v = 0; v < 8; v ++ ) for ( let i = 0; i < 27; i ++ ) sh[ 27 * v + i ] = grid.positions[ 3 * v ] * ( i + 1 );
 		const out = new Float32Array( 27 );
 		grid.interpolate( 0.25, 0.5, 0.5, indices, weights );
 		blendSH( indices, weights, sh, out );

@@ -7,7 +7,10 @@ import { gridPoints, randomPoints, seededRandom } from '../helpers/pointSets.js'
 function stored( positions: Float64Array ) {
 
 	const { tetrahedra, neighbors, duplicates } = tetrahedralize( positions );
-	return { positions: Float64Array.from( positions ), tetrahedra: Uint32Array.from( tetrahedra ), neighbors: Int32Array.from( neighbors ), duplicates };
+	return {
+		positions: Float64Array.from( positions ), tetrahedra: Uint32Array.from( tetrahedra ), neighbors: Int32Array.from( neighbors ),
+		duplicates
+	};
 
 }
 
@@ -34,9 +37,13 @@ describe( 'TetrahedralMesh.fromTetrahedralization', () => {
 			for ( const outside of [ 'outerCells', 'nearestFace' ] as const ) {
 
 				const built = new TetrahedralMesh( positions, { outside } );
-				const loaded = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { outside, duplicates: data.duplicates } );
+				const loaded = TetrahedralMesh.fromTetrahedralization(
+					data.positions, data.tetrahedra, data.neighbors, { outside, duplicates: data.duplicates }
+				);
 				// Plain arrays (e.g. parsed JSON) work too.
-				const fromJSON = TetrahedralMesh.fromTetrahedralization( Array.from( data.positions ), Array.from( data.tetrahedra ), Array.from( data.neighbors ), { outside } );
+				const fromJSON = TetrahedralMesh.fromTetrahedralization(
+					Array.from( data.positions ), Array.from( data.tetrahedra ), Array.from( data.neighbors ), { outside }
+				);
 				expect( loaded.tetrahedra ).toBe( data.tetrahedra ); // kept, not copied
 				expect( loaded.neighbors ).toBe( data.neighbors );
 				expect( Array.from( loaded.hullFaces ) ).toEqual( Array.from( built.hullFaces ) );
@@ -70,7 +77,10 @@ describe( 'TetrahedralMesh.fromTetrahedralization', () => {
 		const base = stored( randomPoints( 60, 3 ) );
 		const load = ( change: ( d: ReturnType<typeof stored> ) => void, options = {} ) => () => {
 
-			const d = { positions: base.positions.slice(), tetrahedra: base.tetrahedra.slice(), neighbors: base.neighbors.slice(), duplicates: base.duplicates };
+			const d = {
+				positions: base.positions.slice(), tetrahedra: base.tetrahedra.slice(), neighbors: base.neighbors.slice(),
+				duplicates: base.duplicates
+			};
 			change( d );
 			return TetrahedralMesh.fromTetrahedralization( d.positions, d.tetrahedra, d.neighbors, options );
 

@@ -47,7 +47,12 @@ function compareWithScratch( mesh: TetrahedralMesh, seed: number, count = 1000, 
 	expect( scratch.duplicates.length ).toBe( 0 );
 
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let i = 0; i < compact.length; i ++ ) { min[ i % 3 ] = Math.min( min[ i % 3 ], compact[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], compact[ i ] ); }
+	for ( let i = 0; i < compact.length; i ++ ) {
+
+		min[ i % 3 ] = Math.min( min[ i % 3 ], compact[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], compact[ i ] );
+
+	}
+
 	const random = seededRandom( seed );
 	const a = new Uint32Array( 4 ), wa = new Float64Array( 4 ), b = new Uint32Array( 4 ), wb = new Float64Array( 4 );
 	let worst = 0, outside = 0, inside = 0, linear = 0, hint = - 1, scratchHint = - 1;
@@ -64,7 +69,12 @@ function compareWithScratch( mesh: TetrahedralMesh, seed: number, count = 1000, 
 		if ( hints ) hints[ n ] = hint;
 		scratchHint = scratch.interpolate( q[ 0 ], q[ 1 ], q[ 2 ], b, wb, scratchHint );
 		const mine = weightMap( a, wa, null ), theirs = weightMap( b, wb, ids );
-		for ( const id of new Set( [ ...mine.keys(), ...theirs.keys() ] ) ) worst = Math.max( worst, Math.abs( ( mine.get( id ) ?? 0 ) - ( theirs.get( id ) ?? 0 ) ) );
+		for ( const id of new Set( [ ...mine.keys(), ...theirs.keys() ] ) ) {
+
+			worst = Math.max( worst, Math.abs( ( mine.get( id ) ?? 0 ) - ( theirs.get( id ) ?? 0 ) ) );
+
+		}
+
 		for ( let k = 0; k < 4; k ++ ) if ( wa[ k ] > 0 ) expect( mesh.isActive( a[ k ] ) ).toBe( true );
 		if ( hint >= mesh.cellCount ) { outside ++; continue; }
 		inside ++;
@@ -136,7 +146,9 @@ function checkHull( mesh: TetrahedralMesh ): void {
 type Edit = 'move' | 'jump' | 'add' | 'remove';
 
 /** Applies `steps` random edits (keeping at least `minimum` probes), checking against scratch every `every` edits. */
-function runSequence( positions: Float64Array, seed: number, steps: number, every: number, minimum: number ): { edits: Record<Edit, number>, worst: Comparison } {
+function runSequence(
+	positions: Float64Array, seed: number, steps: number, every: number, minimum: number
+): { edits: Record<Edit, number>, worst: Comparison } {
 
 	const dynamic = new DynamicTetrahedralization( positions );
 	const mesh = new IncrementalTetrahedralMesh( dynamic );
@@ -144,7 +156,12 @@ function runSequence( positions: Float64Array, seed: number, steps: number, ever
 	const edits: Record<Edit, number> = { move: 0, jump: 0, add: 0, remove: 0 };
 	const worst: Comparison = { worst: 0, outside: 0, inside: 0, linear: 0 };
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
-	for ( let i = 0; i < positions.length; i ++ ) { min[ i % 3 ] = Math.min( min[ i % 3 ], positions[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], positions[ i ] ); }
+	for ( let i = 0; i < positions.length; i ++ ) {
+
+		min[ i % 3 ] = Math.min( min[ i % 3 ], positions[ i ] ); max[ i % 3 ] = Math.max( max[ i % 3 ], positions[ i ] );
+
+	}
+
 	// Points a little beyond the original box, so edits also grow and shrink the hull.
 	const somewhere = () => [ 0, 1, 2 ].map( ( a ) => min[ a ] + ( random() * 1.2 - 0.1 ) * ( max[ a ] - min[ a ] ) );
 	const hints = new Int32Array( 1000 ).fill( - 1 );
@@ -158,7 +175,12 @@ function runSequence( positions: Float64Array, seed: number, steps: number, ever
 		if ( kind === 'move' ) {
 
 			const p = mesh.positions, size = 0.05 * ( max[ 0 ] - min[ 0 ] );
-			mesh.moveProbe( pick, p[ 3 * pick ] + ( random() - 0.5 ) * size, p[ 3 * pick + 1 ] + ( random() - 0.5 ) * size, p[ 3 * pick + 2 ] + ( random() - 0.5 ) * size );
+			mesh.moveProbe(
+				pick,
+				p[ 3 * pick ] + ( random() - 0.5 ) * size,
+				p[ 3 * pick + 1 ] + ( random() - 0.5 ) * size,
+				p[ 3 * pick + 2 ] + ( random() - 0.5 ) * size
+			);
 
 		} else if ( kind === 'jump' ) {
 
@@ -268,8 +290,10 @@ describe( 'incremental TetrahedralMesh', () => {
 		for ( let t = 0; t < Math.min( mesh.cellCount, before.length / 9 ); t ++ ) {
 
 			if ( changed.has( t ) ) continue;
-			expect( Array.from( mesh.tetrahedra.subarray( 4 * t, 4 * t + 4 ) ) ).toEqual( Array.from( tetrahedraBefore.subarray( 4 * t, 4 * t + 4 ) ) );
-			expect( Array.from( mesh.inverseMatrices.subarray( 9 * t, 9 * t + 9 ) ) ).toEqual( Array.from( before.subarray( 9 * t, 9 * t + 9 ) ) );
+			expect( Array.from( mesh.tetrahedra.subarray( 4 * t, 4 * t + 4 ) ) )
+				.toEqual( Array.from( tetrahedraBefore.subarray( 4 * t, 4 * t + 4 ) ) );
+			expect( Array.from( mesh.inverseMatrices.subarray( 9 * t, 9 * t + 9 ) ) )
+				.toEqual( Array.from( before.subarray( 9 * t, 9 * t + 9 ) ) );
 
 		}
 

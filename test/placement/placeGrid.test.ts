@@ -19,11 +19,15 @@ describe( 'placeGrid', () => {
 		// The definition of a regular grid, written out independently of GridInterpolator.
 		const step = [ 0, 1, 2 ].map( ( a ) => ( max[ a ] - min[ a ] ) / ( counts[ a ] - 1 ) );
 		let index = 0;
-		for ( let k = 0; k < counts[ 2 ]; k ++ ) for ( let j = 0; j < counts[ 1 ]; j ++ ) for ( let i = 0; i < counts[ 0 ]; i ++, index ++ ) {
+		for ( let k = 0; k < counts[ 2 ]; k ++ ) for ( let j = 0; j < counts[ 1 ]; j ++ ) {
 
-			expect( positions[ 3 * index ] ).toBeCloseTo( min[ 0 ] + i * step[ 0 ], 12 );
-			expect( positions[ 3 * index + 1 ] ).toBeCloseTo( min[ 1 ] + j * step[ 1 ], 12 );
-			expect( positions[ 3 * index + 2 ] ).toBeCloseTo( min[ 2 ] + k * step[ 2 ], 12 );
+			for ( let i = 0; i < counts[ 0 ]; i ++, index ++ ) {
+
+				expect( positions[ 3 * index ] ).toBeCloseTo( min[ 0 ] + i * step[ 0 ], 12 );
+				expect( positions[ 3 * index + 1 ] ).toBeCloseTo( min[ 1 ] + j * step[ 1 ], 12 );
+				expect( positions[ 3 * index + 2 ] ).toBeCloseTo( min[ 2 ] + k * step[ 2 ], 12 );
+
+			}
 
 		}
 
@@ -32,7 +36,9 @@ describe( 'placeGrid', () => {
 	it( 'has the box corners exactly at the first, last and axis-end probes', () => {
 
 		// Exact (not just close): a probe meant to sit on a wall must not drift into it by rounding.
-		const at = ( i: number, j: number, k: number ) => Array.from( positions.subarray( 3 * ( i + 4 * ( j + 3 * k ) ), 3 * ( i + 4 * ( j + 3 * k ) ) + 3 ) );
+		const at = ( i: number, j: number, k: number ) => Array.from(
+			positions.subarray( 3 * ( i + 4 * ( j + 3 * k ) ), 3 * ( i + 4 * ( j + 3 * k ) ) + 3 )
+		);
 		expect( at( 0, 0, 0 ) ).toEqual( min );
 		expect( at( 3, 2, 1 ) ).toEqual( max );
 		expect( at( 3, 0, 0 ) ).toEqual( [ max[ 0 ], min[ 1 ], min[ 2 ] ] );

@@ -61,7 +61,9 @@ describe( 'cube face texel → direction mapping', () => {
 
 					point.set( - 1 + ( i + 0.5 ) * 2 / size, - 1 + ( j + 0.5 ) * 2 / size, 0.5 ).unproject( camera ).normalize();
 					const d = cubeFaceDirection( f, i, j, size );
-					maxError = Math.max( maxError, Math.abs( d[ 0 ] - point.x ), Math.abs( d[ 1 ] - point.y ), Math.abs( d[ 2 ] - point.z ) );
+					maxError = Math.max(
+						maxError, Math.abs( d[ 0 ] - point.x ), Math.abs( d[ 1 ] - point.y ), Math.abs( d[ 2 ] - point.z )
+					);
 
 				}
 
@@ -85,7 +87,9 @@ describe( 'cube face texel → direction mapping', () => {
 				for ( let i = 0; i < size; i ++ ) {
 
 					const d = cubeFaceDirection( f, i, j, size );
-					expect( d[ axis ] * sign ).toBeGreaterThan( Math.max( Math.abs( d[ ( axis + 1 ) % 3 ] ), Math.abs( d[ ( axis + 2 ) % 3 ] ) ) );
+					expect( d[ axis ] * sign ).toBeGreaterThan(
+						Math.max( Math.abs( d[ ( axis + 1 ) % 3 ] ), Math.abs( d[ ( axis + 2 ) % 3 ] ) )
+					);
 					expect( Math.hypot( d[ 0 ], d[ 1 ], d[ 2 ] ) ).toBeCloseTo( 1, 14 );
 
 				}

@@ -61,7 +61,9 @@ const bandLimitedTruth = BAND_LIMITED.map( ( a, k ) => a * selfProjection( k ) )
 describe.skipIf( gl === null )( `cube face mapping on a real GL context (headless-gl)${skipReason ? ` — SKIPPED: ${skipReason}` : ''}`, () => {
 
 	const context = gl as StackGLContext;
-	const renderer = gl ? new THREE.WebGLRenderer( { context, canvas: fakeCanvas as unknown as HTMLCanvasElement } ) : null as unknown as THREE.WebGLRenderer;
+	const renderer = gl
+		? new THREE.WebGLRenderer( { context, canvas: fakeCanvas as unknown as HTMLCanvasElement } )
+		: null as unknown as THREE.WebGLRenderer;
 
 	afterAll( () => {
 
@@ -70,8 +72,13 @@ describe.skipIf( gl === null )( `cube face mapping on a real GL context (headles
 
 	} );
 
-	/** Renders `fragment` (a GLSL body writing gl_FragColor from `vec3 d`, the unit world ray) around a CubeCamera and reads back all faces. */
-	function capture( size: number, fragment: string, cameraPosition = new THREE.Vector3() ): { faces: Float32Array[]; target: THREE.WebGLCubeRenderTarget } {
+	/**
+	 * Renders `fragment` (a GLSL body writing gl_FragColor from `vec3 d`, the unit world ray) around a CubeCamera
+	 * and reads back all faces.
+	 */
+	function capture(
+		size: number, fragment: string, cameraPosition = new THREE.Vector3()
+	): { faces: Float32Array[]; target: THREE.WebGLCubeRenderTarget } {
 
 		const target = new THREE.WebGLCubeRenderTarget( size, { type: THREE.FloatType } );
 		const cubeCamera = new THREE.CubeCamera( 0.1, 100, target );
@@ -176,7 +183,9 @@ describe.skipIf( gl === null )( `cube face mapping on a real GL context (headles
 		const size = 32;
 		const { faces, target } = capture( size, 'gl_FragColor = vec4( environment( d ), max( d.x, 0.0 ), max( d.z, 0.0 ) + 0.1, 1.0 );' );
 		const asyncReadback = renderer.readRenderTargetPixelsAsync;
-		renderer.readRenderTargetPixelsAsync = ( ( rt: THREE.WebGLRenderTarget, x: number, y: number, w: number, h: number, buffer: THREE.TypedArray, face?: number ) => {
+		renderer.readRenderTargetPixelsAsync = ( (
+			rt: THREE.WebGLRenderTarget, x: number, y: number, w: number, h: number, buffer: THREE.TypedArray, face?: number
+		) => {
 
 			renderer.readRenderTargetPixels( rt, x, y, w, h, buffer, face );
 			return Promise.resolve( buffer );
@@ -187,7 +196,12 @@ describe.skipIf( gl === null )( `cube face mapping on a real GL context (headles
 			const probe = await LightProbeGenerator.fromCubeRenderTarget( renderer, target );
 			const theirs = probe.sh.toArray();
 			const ours = projectCubeMapToSH( faces, size, { solidAngle: 'paper' } );
-			for ( let i = 0; i < 27; i ++ ) expect( Math.abs( ours[ i ] - theirs[ i ] ) ).toBeLessThan( 1e-6 * Math.abs( theirs[ i % 3 ] ) );
+			for ( let i = 0; i < 27; i ++ ) {
+
+				expect( Math.abs( ours[ i ] - theirs[ i ] ) ).toBeLessThan( 1e-6 * Math.abs( theirs[ i % 3 ] ) );
+
+			}
+
 			// Not vacuous: the probe has real content in every channel and band.
 			expect( Math.abs( theirs[ 3 * 3 + 1 ] ) ).toBeGreaterThan( 0.1 );
 
@@ -209,7 +223,12 @@ describe.skipIf( gl === null )( `cube face mapping on a real GL context (headles
 		// DataTexture keeps flipY = false, so its first row is v = 0, the nadir: 'bottom-up'.
 		const topDown = equirectFrom( width, height, ( x, y, z ) => evaluateBandLimited( BAND_LIMITED, x, y, z ), [ 1, 0.5, 0.25 ] );
 		const bottomUp = new Float32Array( topDown.length );
-		for ( let row = 0; row < height; row ++ ) bottomUp.set( topDown.subarray( row * width * 4, ( row + 1 ) * width * 4 ), ( height - 1 - row ) * width * 4 );
+		for ( let row = 0; row < height; row ++ ) {
+
+			bottomUp.set( topDown.subarray( row * width * 4, ( row + 1 ) * width * 4 ), ( height - 1 - row ) * width * 4 );
+
+		}
+
 		const texture = new THREE.DataTexture( bottomUp, width, height, THREE.RGBAFormat, THREE.FloatType );
 		texture.mapping = THREE.EquirectangularReflectionMapping;
 		texture.magFilter = THREE.LinearFilter;
@@ -233,7 +252,12 @@ describe.skipIf( gl === null )( `cube face mapping on a real GL context (headles
 		expect( context.getError() ).toBe( context.NO_ERROR );
 		const fromCapture = projectCubeMapToSH( faces, size );
 		const fromPanorama = projectEquirectToSH( bottomUp, width, height, { rowOrder: 'bottom-up' } );
-		for ( let i = 0; i < 27; i ++ ) expect( Math.abs( fromCapture[ i ] - fromPanorama[ i ] ) ).toBeLessThan( 1e-3 * fromPanorama[ i % 3 ] );
+		for ( let i = 0; i < 27; i ++ ) {
+
+			expect( Math.abs( fromCapture[ i ] - fromPanorama[ i ] ) ).toBeLessThan( 1e-3 * fromPanorama[ i % 3 ] );
+
+		}
+
 		// And both are the analytic SH of the environment.
 		expect( maxCoefficientError( fromPanorama, bandLimitedTruth, 0 ) ).toBeLessThan( 1e-4 * bandLimitedTruth[ 0 ] );
 		texture.dispose();

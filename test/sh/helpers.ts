@@ -47,7 +47,10 @@ export function evaluateBandLimited( a: ArrayLike<number>, x: number, y: number,
  * Six RGBA faces whose texel (i, j) holds `colour · radiance( direction of that texel )`, using the
  * library's own face mapping (the mapping itself is checked independently elsewhere).
  */
-export function cubeFacesFrom( size: number, radiance: ( x: number, y: number, z: number ) => number, colour: readonly number[] = [ 1, 1, 1 ], faces?: Float32Array[] ): Float32Array[] {
+export function cubeFacesFrom(
+	size: number, radiance: ( x: number, y: number, z: number ) => number, colour: readonly number[] = [ 1, 1, 1 ],
+	faces?: Float32Array[]
+): Float32Array[] {
 
 	const result = faces ?? [];
 	const d = new Float64Array( 3 );
@@ -81,7 +84,10 @@ export function cubeFacesFrom( size: number, radiance: ( x: number, y: number, z
  * `equirectUv` convention inverted: longitude φ = 2π(u − ½), latitude = π(v − ½), v = 1 on the top
  * row, dir = (cos lat cos φ, sin lat, cos lat sin φ).
  */
-export function equirectFrom( width: number, height: number, radiance: ( x: number, y: number, z: number ) => number, colour: readonly number[] = [ 1, 1, 1 ], pixels?: Float32Array ): Float32Array {
+export function equirectFrom(
+	width: number, height: number, radiance: ( x: number, y: number, z: number ) => number, colour: readonly number[] = [ 1, 1, 1 ],
+	pixels?: Float32Array
+): Float32Array {
 
 	const result = pixels ?? new Float32Array( width * height * 4 );
 	for ( let row = 0; row < height; row ++ ) {
@@ -90,7 +96,9 @@ export function equirectFrom( width: number, height: number, radiance: ( x: numb
 		for ( let i = 0; i < width; i ++ ) {
 
 			const longitude = 2 * Math.PI * ( ( i + 0.5 ) / width - 0.5 );
-			const value = radiance( Math.cos( latitude ) * Math.cos( longitude ), Math.sin( latitude ), Math.cos( latitude ) * Math.sin( longitude ) );
+			const value = radiance(
+				Math.cos( latitude ) * Math.cos( longitude ), Math.sin( latitude ), Math.cos( latitude ) * Math.sin( longitude )
+			);
 			const p = ( row * width + i ) * 4;
 			result[ p ] = colour[ 0 ] * value;
 			result[ p + 1 ] = colour[ 1 ] * value;

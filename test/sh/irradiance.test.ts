@@ -100,7 +100,12 @@ describe( 'irradiance reconstruction', () => {
 			for ( let c = 0; c < 3; c ++ ) {
 
 				let quadratic = 0;
-				for ( let col = 0; col < 4; col ++ ) for ( let row = 0; row < 4; row ++ ) quadratic += n[ row ] * matrices[ c * 16 + col * 4 + row ] * n[ col ];
+				for ( let col = 0; col < 4; col ++ ) for ( let row = 0; row < 4; row ++ ) {
+
+					quadratic += n[ row ] * matrices[ c * 16 + col * 4 + row ] * n[ col ];
+
+				}
+
 				expect( Math.abs( quadratic - e[ c ] ) ).toBeLessThanOrEqual( 1e-6 * Math.abs( e[ c ] ) );
 
 			}
@@ -115,7 +120,12 @@ describe( 'irradiance reconstruction', () => {
 		const out = irradianceMatrices( sh );
 		for ( let c = 0; c < 3; c ++ ) {
 
-			for ( let r = 0; r < 4; r ++ ) for ( let q = 0; q < 4; q ++ ) expect( out[ c * 16 + q * 4 + r ] ).toBe( out[ c * 16 + r * 4 + q ] );
+			for ( let r = 0; r < 4; r ++ ) for ( let q = 0; q < 4; q ++ ) {
+
+				expect( out[ c * 16 + q * 4 + r ] ).toBe( out[ c * 16 + r * 4 + q ] );
+
+			}
+
 			expect( out[ c * 16 ] ).toBeCloseTo( 0.429043 * sh[ 24 + c ], 6 );
 			expect( out[ c * 16 + 5 ] ).toBeCloseTo( - 0.429043 * sh[ 24 + c ], 6 );
 			// Translation slot (column 3, rows 0..2) holds c2 × band 1 (x, y, z) = c2 × (L11, L1−1, L10).
@@ -141,8 +151,10 @@ describe( 'irradiance reconstruction', () => {
 		expect( out.subarray( 144 ).every( ( v ) => v === - 1 ) ).toBe( true );
 
 		const normal = { x: 0.6, y: 0, z: - 0.8 };
-		expect( Array.from( evaluateIrradiance( probes, normal, undefined, 27 * 3 ) ) ).toEqual( Array.from( evaluateIrradiance( single, normal ) ) );
-		expect( Array.from( evaluateRadiance( probes, normal, undefined, 27 * 3 ) ) ).toEqual( Array.from( evaluateRadiance( single, normal ) ) );
+		expect( Array.from( evaluateIrradiance( probes, normal, undefined, 27 * 3 ) ) )
+			.toEqual( Array.from( evaluateIrradiance( single, normal ) ) );
+		expect( Array.from( evaluateRadiance( probes, normal, undefined, 27 * 3 ) ) )
+			.toEqual( Array.from( evaluateRadiance( single, normal ) ) );
 
 	} );
 

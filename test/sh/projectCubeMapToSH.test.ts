@@ -86,8 +86,8 @@ describe( 'projectCubeMapToSH', () => {
 		// Analytic: ∫max(0,z)dω = π, ∫z·max(0,z) = 2π/3, ∫(3z²−1)max(0,z) = π/2, and the other
 		// polynomials integrate to 0 against it by symmetry (odd in x or y). With three's constants:
 		// L00 = 0.282095π, L10 = 0.488603·2π/3, L20 = 0.315392·π/2 — equal to √π/2, √(π/3), √(5π)/8
-		// within 2e-6 relative (truncation: 0.488603 vs √3/(2√π) = 0.4886025). The kink at z = 0 lies on texel edges (even size), so each texel
-		// is smooth and the quadrature error stays second order: measured 3.1e-5·L00 at 128².
+		// within 2e-6 relative (truncation: 0.488603 vs √3/(2√π) = 0.4886025). The kink at z = 0 lies on texel edges (even size),
+		// so each texel is smooth and the quadrature error stays second order: measured 3.1e-5·L00 at 128².
 		const sh = projectCubeMapToSH( cubeFacesFrom( 128, ( x, y, z ) => Math.max( 0, z ) ), 128 );
 		const ideal = [ Math.sqrt( Math.PI ) / 2, 0, Math.sqrt( Math.PI / 3 ), 0, 0, 0, Math.sqrt( 5 * Math.PI ) / 8, 0, 0 ];
 		const truncated = [ 0.282095 * Math.PI, 0, 0.488603 * 2 * Math.PI / 3, 0, 0, 0, 0.315392 * Math.PI / 2, 0, 0 ];

@@ -105,7 +105,12 @@ describe( 'projectEquirectToSH', () => {
 		const width = 32, height = 16;
 		const topDown = equirectFrom( width, height, ( x, y, z ) => 1 + y + 0.3 * x * z - 0.2 * z, COLOUR );
 		const bottomUp = new Float32Array( topDown.length );
-		for ( let row = 0; row < height; row ++ ) bottomUp.set( topDown.subarray( row * width * 4, ( row + 1 ) * width * 4 ), ( height - 1 - row ) * width * 4 );
+		for ( let row = 0; row < height; row ++ ) {
+
+			bottomUp.set( topDown.subarray( row * width * 4, ( row + 1 ) * width * 4 ), ( height - 1 - row ) * width * 4 );
+
+		}
+
 		const reference = projectEquirectToSH( topDown, width, height );
 		expect( Array.from( projectEquirectToSH( bottomUp, width, height, { rowOrder: 'bottom-up' } ) ) ).toEqual( Array.from( reference ) );
 		// Not symmetric in y, so reading the flipped data as top-down must differ (the option matters).

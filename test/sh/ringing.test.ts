@@ -41,7 +41,9 @@ function bruteMinimum( sh: ArrayLike<number>, quantity: 'irradiance' | 'radiance
 	let max = - Infinity;
 	for ( let i = 0; i < BRUTE_COUNT; i ++ ) {
 
-		direction[ 0 ] = bruteDirections[ 3 * i ]; direction[ 1 ] = bruteDirections[ 3 * i + 1 ]; direction[ 2 ] = bruteDirections[ 3 * i + 2 ];
+		direction[ 0 ] = bruteDirections[ 3 * i ];
+		direction[ 1 ] = bruteDirections[ 3 * i + 1 ];
+		direction[ 2 ] = bruteDirections[ 3 * i + 2 ];
 		evaluate( sh, direction, sample, offset );
 		for ( let c = 0; c < 3; c ++ ) {
 
@@ -83,7 +85,8 @@ function sunPanorama( width: number, height: number, sun: Vec3, sunRadius: numbe
 	const sunColour = [ sunRatio * 0.15, sunRatio * 0.15, sunRatio * 0.135 ];
 	const cosRadius = Math.cos( sunRadius );
 	// One channel at a time through the shared sampler (three's equirect orientation).
-	const channel = ( c: number ) => equirectFrom( width, height, ( x, y, z ) => x * sun[ 0 ] + y * sun[ 1 ] + z * sun[ 2 ] >= cosRadius ? sunColour[ c ] : y > 0 ? sky[ c ] : ground[ c ] );
+	const channel = ( c: number ) => equirectFrom( width, height,
+		( x, y, z ) => x * sun[ 0 ] + y * sun[ 1 ] + z * sun[ 2 ] >= cosRadius ? sunColour[ c ] : y > 0 ? sky[ c ] : ground[ c ] );
 	const pixels = channel( 0 );
 	const g = channel( 1 ), b = channel( 2 );
 	for ( let i = 0; i < pixels.length; i += 4 ) {
@@ -128,7 +131,12 @@ function fitSH9( f: ( x: number, y: number, z: number ) => number ): Float64Arra
 
 		let pivot = col;
 		for ( let r = col + 1; r < 9; r ++ ) if ( Math.abs( normal[ 9 * r + col ] ) > Math.abs( normal[ 9 * pivot + col ] ) ) pivot = r;
-		for ( let k = 0; k < 9; k ++ ) [ normal[ 9 * col + k ], normal[ 9 * pivot + k ] ] = [ normal[ 9 * pivot + k ], normal[ 9 * col + k ] ];
+		for ( let k = 0; k < 9; k ++ ) {
+
+			[ normal[ 9 * col + k ], normal[ 9 * pivot + k ] ] = [ normal[ 9 * pivot + k ], normal[ 9 * col + k ] ];
+
+		}
+
 		[ rhs[ col ], rhs[ pivot ] ] = [ rhs[ pivot ], rhs[ col ] ];
 		for ( let r = col + 1; r < 9; r ++ ) {
 
@@ -181,7 +189,8 @@ describe( 'minIrradiance / minRadiance: exact minimum of the reconstructed quadr
 	const hard = new Float64Array( 27 ); hard[ 0 ] = hard[ 1 ] = hard[ 2 ] = 1; hard[ 18 ] = hard[ 19 ] = hard[ 20 ] = 0.8;
 	const band2 = new Float64Array( 27 ); for ( let k = 12; k < 27; k ++ ) band2[ k ] = Math.sin( k );
 	const constant = new Float64Array( 27 ); constant[ 0 ] = 2; constant[ 1 ] = 1; constant[ 2 ] = 0.5;
-	const tilted = new Float64Array( 27 ); tilted[ 0 ] = tilted[ 1 ] = tilted[ 2 ] = 1; tilted[ 6 ] = 1e-12; tilted[ 18 ] = tilted[ 19 ] = tilted[ 20 ] = - 0.6;
+	const tilted = new Float64Array( 27 ); tilted[ 0 ] = tilted[ 1 ] = tilted[ 2 ] = 1; tilted[ 6 ] = 1e-12;
+	tilted[ 18 ] = tilted[ 19 ] = tilted[ 20 ] = - 0.6;
 	probes.push( hard, band2, constant, tilted );
 
 	for ( const quantity of [ 'irradiance', 'radiance' ] as const ) {
@@ -236,7 +245,9 @@ describe( 'minIrradiance / minRadiance: exact minimum of the reconstructed quadr
 
 			const a = Float64Array.from( { length: 9 }, ( _, k ) => k === 0 ? 1 : 2 * next2() - 1 );
 			const r = randomRotation( next2 );
-			const rotated = fitSH9( ( x, y, z ) => evaluate9( a, r[ 0 ] * x + r[ 3 ] * y + r[ 6 ] * z, r[ 1 ] * x + r[ 4 ] * y + r[ 7 ] * z, r[ 2 ] * x + r[ 5 ] * y + r[ 8 ] * z ) );
+			const rotated = fitSH9( ( x, y, z ) => evaluate9(
+				a, r[ 0 ] * x + r[ 3 ] * y + r[ 6 ] * z, r[ 1 ] * x + r[ 4 ] * y + r[ 7 ] * z, r[ 2 ] * x + r[ 5 ] * y + r[ 8 ] * z
+			) );
 			const sh = new Float64Array( 27 ), shR = new Float64Array( 27 );
 			for ( let k = 0; k < 9; k ++ ) for ( let c = 0; c < 3; c ++ ) { sh[ 3 * k + c ] = a[ k ]; shR[ 3 * k + c ] = rotated[ k ]; }
 			// Radiance exactly; irradiance to 1e-6 because three's 6-digit convolution constants
@@ -322,8 +333,18 @@ describe( 'windowSH: Hann window per band (Sloan 2008), strength s = 1/w', () =>
 			const a = Float64Array.from( { length: 9 }, () => 2 * next2() - 1 );
 			const r = randomRotation( next2 );
 			// L_R(ω) = L(Rᵀω).
-			const rotate = ( coefficients: ArrayLike<number> ) => fitSH9( ( x, y, z ) => evaluate9( coefficients, r[ 0 ] * x + r[ 3 ] * y + r[ 6 ] * z, r[ 1 ] * x + r[ 4 ] * y + r[ 7 ] * z, r[ 2 ] * x + r[ 5 ] * y + r[ 8 ] * z ) );
-			const toSH = ( c: ArrayLike<number> ) => { const s = new Float64Array( 27 ); for ( let k = 0; k < 9; k ++ ) s[ 3 * k ] = s[ 3 * k + 1 ] = s[ 3 * k + 2 ] = c[ k ]; return s; };
+			const rotate = ( coefficients: ArrayLike<number> ) => fitSH9( ( x, y, z ) => evaluate9(
+				coefficients,
+				r[ 0 ] * x + r[ 3 ] * y + r[ 6 ] * z, r[ 1 ] * x + r[ 4 ] * y + r[ 7 ] * z, r[ 2 ] * x + r[ 5 ] * y + r[ 8 ] * z
+			) );
+			const toSH = ( c: ArrayLike<number> ) => {
+
+				const s = new Float64Array( 27 );
+				for ( let k = 0; k < 9; k ++ ) s[ 3 * k ] = s[ 3 * k + 1 ] = s[ 3 * k + 2 ] = c[ k ];
+				return s;
+
+			};
+
 			const channel = ( s: ArrayLike<number> ) => Float64Array.from( { length: 9 }, ( _, k ) => s[ 3 * k ] );
 			const strength = 0.1 + 0.8 * next2();
 			const windowThenRotate = rotate( channel( windowSH( toSH( a ), strength, new Float64Array( 27 ) ) ) );
@@ -531,7 +552,9 @@ describe( 'real HDR panoramas (../shared/assets/panoramas)', () => {
 
 			const buffer = fs.readFileSync( path.join( directory as string, file ) );
 			const arrayBuffer = buffer.buffer.slice( buffer.byteOffset, buffer.byteOffset + buffer.byteLength ) as ArrayBuffer;
-			const { data, width, height } = new HDRLoader().setDataType( THREE.FloatType ).parse( arrayBuffer ) as { data: Float32Array; width: number; height: number };
+			const { data, width, height } = new HDRLoader().setDataType( THREE.FloatType ).parse( arrayBuffer ) as {
+				data: Float32Array; width: number; height: number
+			};
 			const sh = projectEquirectToSH( data, width, height );
 			const mean = IRRADIANCE_C4 * sh[ 0 ];
 			const before = minIrradiance( sh );
