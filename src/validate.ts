@@ -120,6 +120,17 @@ export function assertInteger( where: string, name: string, value: unknown, min:
 }
 
 /**
+ * Checks that x, y and z are finite numbers (one point given as three arguments).
+ */
+export function assertCoordinates( where: string, x: unknown, y: unknown, z: unknown ): void {
+
+	if ( Number.isFinite( x ) && Number.isFinite( y ) && Number.isFinite( z ) ) return;
+	const [ name, value ] = ! Number.isFinite( x ) ? [ 'x', x ] : ! Number.isFinite( y ) ? [ 'y', y ] : [ 'z', z ];
+	throw new RangeError( `${where}: ${name} is ${typeof value === 'number' ? value : describe( value )}; coordinates must be finite numbers.` );
+
+}
+
+/**
  * Checks that an output array-like has room for at least `length` entries.
  */
 export function assertOutput( where: string, name: string, value: unknown, length: number ): void {
@@ -130,6 +141,146 @@ export function assertOutput( where: string, name: string, value: unknown, lengt
 		throw new RangeError( `${where}: ${name} must have room for ${length} values, got length ${value.length}.` );
 
 	}
+
+}
+
+/**
+ * The largest |SH coefficient| a probe may hold. Blends are convex combinations (weights ≥ 0
+ * summing to 1), irradiance matrix entries are sums of two coefficients times constants below 1,
+ * and a shader's nᵀMn sums 16 entries: from |L| ≤ 1e30 every value stays below 1e32, far inside
+ * float32 (3.4e38), with room for intensities and light scales. See docs/format.md.
+ */
+export const SH_LIMIT = Math.fround( 1e30 ); // 1e30 as float32 stores it, so a Float32Array holding 1e30 passes
+
+/**
+ * The largest |coordinate| a probe position may have. Differences are then ≤ 2e18, and products
+ * of up to 16 of them (squared distances, determinants, in-sphere tests, their squares) stay
+ * below 1e293 in float64: nothing the runtime computes from positions can overflow. 1e18 m is
+ * a hundred light-years. See docs/format.md.
+ */
+export const POSITION_LIMIT = 1e18;
+
+/**
+ * The index of the first entry that is not a number in [−limit, limit] (NaN, ±Infinity and
+ * non-numbers included), or −1 when every entry is.
+ */
+export function firstBeyond( values: ArrayLike<number>, limit: number ): number {
+
+	for ( let i = 0, n = values.length; i < n; i ++ ) {
+
+		const v = values[ i ];
+		if ( ! ( v <= limit && v >= - limit ) ) return i;
+
+	}
+
+	return - 1;
+
+}
+
+/**
+ * {@link assertSH} for SH a volume stores: also every |value| ≤ {@link SH_LIMIT}.
+ * @returns The number of probes it holds.
+ */
+export function assertProbeSH( where: string, name: string, value: unknown, count?: number ): number {
+
+	const probes = assertSH( where, name, value, count );
+	const sh = value as ArrayLike<number>;
+	const i = firstBeyond( sh, SH_LIMIT );
+	if ( i >= 0 ) {
+
+		throw new RangeError( `${where}: ${name}[${i}] is ${sh[ i ]}; probe SH values must be within ±${SH_LIMIT.toPrecision( 3 )} (so every blend and irradiance `
+			+ 'matrix stays finite in float32).' );
+
+	}
+
+	return probes;
+
+}
+
+/**
+ * {@link assertPoints} for probe positions: also every |coordinate| ≤ {@link POSITION_LIMIT}.
+ * @returns The number of points.
+ */
+export function assertProbePositions( where: string, name: string, value: unknown, minPoints = 0 ): number {
+
+	const count = assertPoints( where, name, value, minPoints );
+	const points = value as ArrayLike<number>;
+	const i = firstBeyond( points, POSITION_LIMIT );
+	if ( i >= 0 ) {
+
+		throw new RangeError( `${where}: ${name}[${i}] is ${points[ i ]}; probe coordinates must be within ±${POSITION_LIMIT.toExponential()}.` );
+
+	}
+
+	return count;
+
+}
+
+/**
+ * Checks an optional number (undefined passes): a finite number ≥ `min`. A value that is not a
+ * number throws a TypeError, NaN, ±Infinity or one below `min` a RangeError.
+ */
+export function assertOptionalNumber( where: string, name: string, value: unknown, min = - Infinity ): void {
+
+	if ( value === undefined || ( typeof value === 'number' && Number.isFinite( value ) && value >= min ) ) return;
+	const message = `${where}: ${name} must be a finite number${min === - Infinity ? '' : ` ≥ ${min}`}, got ${describe( value )}.`;
+	throw typeof value === 'number' ? new RangeError( message ) : new TypeError( message );
+
+}
+
+/**
+ * Checks that an optional value is a boolean (undefined passes).
+ */
+export function assertOptionalBoolean( where: string, name: string, value: unknown ): void {
+
+	if ( value !== undefined && typeof value !== 'boolean' ) {
+
+		throw new TypeError( `${where}: ${name} must be true or false, got ${describe( value )}.` );
+
+	}
+
+}
+
+/**
+ * Checks that an optional value is a function (undefined passes).
+ */
+export function assertOptionalFunction( where: string, name: string, value: unknown ): void {
+
+	if ( value !== undefined && typeof value !== 'function' ) {
+
+		throw new TypeError( `${where}: ${name} must be a function, got ${describe( value )}.` );
+
+	}
+
+}
+
+/**
+ * Checks that an options argument is an object (undefined passes: the defaults apply).
+ */
+export function assertOptions( where: string, name: string, value: unknown ): void {
+
+	if ( value !== undefined && ( value === null || typeof value !== 'object' || Array.isArray( value ) ) ) {
+
+		throw new TypeError( `${where}: ${name} must be an object, got ${describe( value )}.` );
+
+	}
+
+}
+
+// A lone UTF-16 surrogate has no UTF-8 encoding (TextEncoder would silently write U+FFFD).
+const LONE_SURROGATE = /[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/;
+
+/** Whether a string can be stored as UTF-8 (it has no lone surrogate). */
+export function isStorableText( text: string ): boolean {
+
+	return ! LONE_SURROGATE.test( text );
+
+}
+
+/** A short description of a value for messages: `null`, `an array of length 3`, `the string "…"`, `a Float32Array`, `number 2`. */
+export function describeValue( value: unknown ): string {
+
+	return describe( value );
 
 }
 

@@ -1,10 +1,11 @@
 import {
-	CubeCamera, HalfFloatType, FloatType, NearestFilter, WebGLCubeRenderTarget,
+	CubeCamera, NearestFilter, WebGLCubeRenderTarget,
 	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
+import { assertRenderer, assertScene, checkCaptureCall, checkCaptureSettings } from './captureSettings.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
-import { SH_FLOATS, assertInteger, assertNumber, assertPoints } from '../validate.js';
+import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../validate.js';
 
 /** Settings of {@link ProbeCapturer}. */
 export interface ProbeCaptureSettings {
@@ -21,7 +22,10 @@ export interface ProbeCaptureSettings {
 	/** Cube render target type: `HalfFloatType` (default) or `FloatType`. */
 	type?: TextureDataType;
 
-	/** Texel solid-angle formula of the projection. Default `'exact'`. */
+	/**
+	 * Texel solid-angle formula of the projection: `'exact'` (default), `'paper'` (the paper's
+	 * formula rescaled to sum to 4π) or `'paper-unnormalized'` (as printed, +1.5 % on L00).
+	 */
 	solidAngle?: CubeSolidAngleMode;
 
 }
@@ -80,12 +84,8 @@ export class ProbeCapturer {
 	 */
 	constructor( renderer: WebGLRenderer, settings: ProbeCaptureSettings = {} ) {
 
-		const { resolution = 32, near = 0.05, far = 1000, type = HalfFloatType, solidAngle = 'exact' } = settings;
-		assertInteger( 'ProbeCapturer', 'resolution', resolution, 1, 256 );
-		assertNumber( 'ProbeCapturer', 'near', near );
-		assertNumber( 'ProbeCapturer', 'far', far );
-		if ( ! ( near > 0 && far > near ) ) throw new RangeError( `ProbeCapturer: need 0 < near < far, got near ${near}, far ${far}.` );
-		if ( type !== HalfFloatType && type !== FloatType ) throw new RangeError( 'ProbeCapturer: type must be HalfFloatType or FloatType (the capture holds linear HDR radiance).' );
+		assertRenderer( 'ProbeCapturer', renderer );
+		const { resolution, near, far, type, solidAngle } = checkCaptureSettings( 'ProbeCapturer', '', settings );
 
 		this.renderer = renderer;
 		this.resolution = resolution;
@@ -103,11 +103,20 @@ export class ProbeCapturer {
 	 * @param positions Flat x, y, z per probe.
 	 * @param target Receives 27 floats per probe, from `offset`.
 	 * @returns `target`, once every probe is done.
-	 * @throws {Error} when the WebGL context is lost during the capture (`target` then keeps what it had).
+	 * @throws {Error} when the WebGL context is lost during the capture, or a probe captures a value
+	 * that is not finite or beyond ±1e30 (`target` then keeps what it had).
 	 */
-	async capture( scene: Scene, positions: ArrayLike<number>, target: Float32Array, options: ProbeCaptureOptions = {}, offset = 0 ): Promise<Float32Array> {
+	async capture(
+		scene: Scene, positions: ArrayLike<number>, target: Float32Array, options: ProbeCaptureOptions = {}, offset = 0,
+	): Promise<Float32Array> {
 
-		const count = assertPoints( 'ProbeCapturer.capture', 'positions', positions, 1 );
+		const where = 'ProbeCapturer.capture';
+		assertScene( where, scene );
+		const count = assertPoints( where, 'positions', positions, 1 );
+		if ( ! ( target instanceof Float32Array ) ) throw new TypeError( `${where}: target must be a Float32Array, got ${describeValue( target )}.` );
+		assertInteger( where, 'offset', offset, 0 );
+		const { exclude } = checkCaptureCall( where, 'options.', options );
+		options = { ...options, exclude };
 		if ( target.length < offset + SH_FLOATS * count ) {
 
 			throw new RangeError( `ProbeCapturer.capture: target must have room for ${SH_FLOATS * count} floats from offset ${offset}, got length ${target.length}.` );
@@ -177,9 +186,11 @@ export class ProbeCapturer {
 		}
 
 		this.checkContext();
-		for ( let i = 0; i < result.length; i ++ ) {
+		const bad = firstBeyond( result, SH_LIMIT );
+		if ( bad >= 0 ) {
 
-			if ( ! Number.isFinite( result[ i ] ) ) throw new Error( `ProbeCapturer.capture: probe ${Math.floor( i / SH_FLOATS )} captured a non-finite value (${result[ i ]}); check the scene for NaN/Infinity emissive or light values.` );
+			throw new Error( `${where}: probe ${Math.floor( bad / SH_FLOATS )} captured ${result[ bad ]}, not a finite value within ±${SH_LIMIT.toPrecision( 3 )}; `
+				+ 'check the scene for NaN, Infinity or huge emissive or light values.' );
 
 		}
 

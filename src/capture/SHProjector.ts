@@ -6,7 +6,8 @@ import {
 import { fullscreenVert, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
 import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../sh/cubeTexelSolidAngle.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
-import { SH_FLOATS, assertInteger } from '../validate.js';
+import { SH_FLOATS, assertInteger, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
+import { CAPTURE_SOLID_ANGLES, assertRenderer } from './captureSettings.js';
 
 // Rows of the projection target: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
 const MAX_ROWS = 4096;
@@ -89,6 +90,9 @@ export class SHProjector {
 	 */
 	constructor( renderer: WebGLRenderer, options: SHProjectorOptions = {} ) {
 
+		assertRenderer( 'SHProjector', renderer );
+		assertOptions( 'SHProjector', 'options', options );
+		assertOptionalBoolean( 'SHProjector', 'options.multipleTargets', options.multipleTargets );
 		this.renderer = renderer;
 		this.multipleTargets = options.multipleTargets ?? SHProjector.supportsMultipleTargets( renderer );
 		const defines: Record<string, number> = this.multipleTargets ? {} : { SINGLE_TARGET: 1 };
@@ -113,6 +117,7 @@ export class SHProjector {
 	/** Most sources one batch can hold for a source of this size (texels per axis). */
 	static batchCapacity( size: number ): number {
 
+		assertInteger( 'SHProjector.batchCapacity', 'size', size, 1, 1 << 14 );
 		return Math.floor( MAX_ROWS / tilesFor( size ) );
 
 	}
@@ -123,6 +128,7 @@ export class SHProjector {
 	 */
 	static supportsMultipleTargets( renderer: WebGLRenderer ): boolean {
 
+		assertRenderer( 'SHProjector.supportsMultipleTargets', renderer );
 		let supported = multipleTargetSupport.get( renderer );
 		if ( supported !== undefined ) return supported;
 
@@ -176,6 +182,16 @@ export class SHProjector {
 	 */
 	begin( source: 'cube' | 'equirect', size: number, count: number, options: { height?: number, solidAngle?: CubeSolidAngleMode } = {} ): void {
 
+		const where = 'SHProjector.begin';
+		if ( source !== 'cube' && source !== 'equirect' ) throw new RangeError( `${where}: source is ${describeValue( source )}; expected 'cube' or 'equirect'.` );
+		assertOptions( where, 'options', options );
+		const solidAngle = options.solidAngle ?? 'exact';
+		if ( ! CAPTURE_SOLID_ANGLES.includes( solidAngle ) ) {
+
+			throw new RangeError( `${where}: options.solidAngle is ${describeValue( solidAngle )}; expected ${CAPTURE_SOLID_ANGLES.map( ( m ) => `'${m}'` ).join( ', ' )}.` );
+
+		}
+
 		assertInteger( 'SHProjector.begin', 'size', size, 1, 1 << 14 );
 		const height = source === 'equirect' ? options.height ?? Math.max( 1, size >> 1 ) : size;
 		assertInteger( 'SHProjector.begin', 'height', height, 1, 1 << 14 );
@@ -191,7 +207,7 @@ export class SHProjector {
 		if ( source === 'cube' ) {
 
 			const u = this.cubeMaterial.uniforms;
-			u.solidAngles.value = this.solidAngleTexture( size, options.solidAngle ?? 'exact' );
+			u.solidAngles.value = this.solidAngleTexture( size, solidAngle );
 			u.size.value = size;
 			u.tiles.value = tiles;
 			u.block.value = Math.ceil( size / tiles );
@@ -216,6 +232,13 @@ export class SHProjector {
 
 		if ( this.source === null ) throw new Error( 'SHProjector.add: call begin() first.' );
 		if ( this.count >= this.capacity ) throw new Error( `SHProjector.add: the batch holds ${this.capacity} sources; call finish() first.` );
+		const kind = texture as { isTexture?: boolean; isCubeTexture?: boolean } | null;
+		if ( kind?.isTexture !== true || ( kind.isCubeTexture === true ) !== ( this.source === 'cube' ) ) {
+
+			throw new TypeError( `SHProjector.add: texture must be a three.js ${this.source === 'cube' ? 'CubeTexture (a WebGLCubeRenderTarget\'s)' : '2D Texture'} `
+				+ `for a '${this.source}' batch, got ${describeValue( texture )}.` );
+
+		}
 
 		const material = this.source === 'cube' ? this.cubeMaterial : this.equirectMaterial;
 		material.uniforms[ this.source === 'cube' ? 'cubeMap' : 'panorama' ].value = texture;
@@ -243,6 +266,8 @@ export class SHProjector {
 	finish( target: Float32Array, offset = 0 ): Float32Array {
 
 		if ( this.source === null ) throw new Error( 'SHProjector.finish: call begin() first.' );
+		if ( ! ( target instanceof Float32Array ) ) throw new TypeError( `SHProjector.finish: target must be a Float32Array, got ${describeValue( target )}.` );
+		assertInteger( 'SHProjector.finish', 'offset', offset, 0 );
 		const count = this.count;
 		if ( target.length < offset + SH_FLOATS * count ) {
 

@@ -1,6 +1,7 @@
 import type { Texture, WebGLRenderer } from 'three';
 import { SHProjector } from './SHProjector.js';
-import { SH_FLOATS } from '../validate.js';
+import { SH_FLOATS, describeValue } from '../validate.js';
+import { assertRenderer } from './captureSettings.js';
 
 /**
  * GPU counterpart of {@link projectEquirectToSH}: projects an equirectangular panorama texture
@@ -14,6 +15,14 @@ import { SH_FLOATS } from '../validate.js';
  * @returns `target`.
  */
 export function projectEquirectToSHGPU( renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
+
+	assertRenderer( 'projectEquirectToSHGPU', renderer );
+	const kind = texture as { isTexture?: boolean; isCubeTexture?: boolean } | null;
+	if ( kind?.isTexture !== true || kind.isCubeTexture === true ) {
+
+		throw new TypeError( `projectEquirectToSHGPU: texture must be a three.js 2D Texture (an equirectangular panorama), got ${describeValue( texture )}.` );
+
+	}
 
 	if ( ! ( target instanceof Float32Array ) || target.length < SH_FLOATS ) {
 

@@ -40,6 +40,16 @@ export class GLTFLightProbeVolumeExporterPlugin implements GLTFExporterPlugin {
 		options: EncodeBakedVolumeOptions = {},
 	) {
 
+		const where = 'GLTFLightProbeVolumeExporterPlugin';
+		const candidate = writer as unknown as Partial<WriterInternals> | null;
+		if ( ! candidate || typeof candidate !== 'object' || typeof candidate.processBuffer !== 'function' ) {
+
+			throw new BakedVolumeError( 'argument', `${where}: writer must be the GLTFWriter that GLTFExporter passes to register()'s callback.` );
+
+		}
+
+		if ( volumes === null || typeof volumes !== 'object' ) throw new BakedVolumeError( 'argument', `${where}: volumes must be an array of { name, data } or one volume.` );
+		if ( options === null || typeof options !== 'object' ) throw new BakedVolumeError( 'argument', `${where}: options must be an object.` );
 		this.writer = writer as unknown as WriterInternals;
 		this.volumes = Array.isArray( volumes ) ? volumes.slice() : [ { name: '', data: volumes as BakedVolumeInput } ];
 		this.options = options;

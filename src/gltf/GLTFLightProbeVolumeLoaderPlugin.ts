@@ -26,6 +26,13 @@ export class GLTFLightProbeVolumeLoaderPlugin implements GLTFLoaderPlugin {
 	 */
 	constructor( parser: GLTFParser ) {
 
+		const candidate = parser as { json?: unknown; getDependency?: unknown } | null;
+		if ( ! candidate || typeof candidate.json !== 'object' || typeof candidate.getDependency !== 'function' ) {
+
+			throw new BakedVolumeError( 'argument', 'GLTFLightProbeVolumeLoaderPlugin: parser must be the GLTFParser that GLTFLoader passes to register()\'s callback.' );
+
+		}
+
 		this.parser = parser;
 
 	}
@@ -34,12 +41,12 @@ export class GLTFLightProbeVolumeLoaderPlugin implements GLTFLoaderPlugin {
 	async afterRoot( result: GLTF ): Promise<void> {
 
 		const where = 'GLTFLightProbeVolumeLoaderPlugin';
-		const json = this.parser.json as { extensions?: Record<string, unknown>; bufferViews?: unknown[] };
+		const json = this.parser.json as { extensions?: Record<string, unknown>; bufferViews?: unknown[]; buffers?: unknown[] };
 		const extension = json.extensions?.[ this.name ];
 		if ( extension === undefined ) return;
 		const volumes = ( extension as { volumes?: unknown } )?.volumes;
 		if ( ! Array.isArray( volumes ) ) throw new BakedVolumeError( 'json', `${where}: extensions.${this.name}.volumes must be an array.` );
-		const viewCount = json.bufferViews?.length ?? 0;
+		const viewCount = Array.isArray( json.bufferViews ) ? json.bufferViews.length : 0;
 		const loaded: GLTFLightProbeVolumeEntry[] = [];
 		for ( let i = 0; i < volumes.length; i ++ ) {
 
@@ -53,13 +60,61 @@ export class GLTFLightProbeVolumeLoaderPlugin implements GLTFLoaderPlugin {
 
 			const name = entry?.name ?? '';
 			if ( typeof name !== 'string' ) throw new BakedVolumeError( 'json', `${where}: volumes[${i}].name must be a string.` );
-			const buffer = await this.parser.getDependency( 'bufferView', bufferView ) as ArrayBuffer;
+			checkBufferView( `${where}: volumes[${i}]`, json, bufferView );
+			let buffer: ArrayBuffer;
+			try {
+
+				buffer = await this.parser.getDependency( 'bufferView', bufferView ) as ArrayBuffer;
+
+			} catch ( error ) {
+
+				// three's loader throws whatever a missing or unreadable buffer gives (TypeError, fetch errors).
+				throw new BakedVolumeError( 'truncated', `${where}: volumes[${i}]: bufferView ${bufferView} could not be read (${( error as Error )?.message ?? error}).` );
+
+			}
+
+			if ( ! ( buffer instanceof ArrayBuffer ) ) throw new BakedVolumeError( 'truncated', `${where}: volumes[${i}]: bufferView ${bufferView} gave no bytes.` );
 			loaded.push( { name, data: decodeBakedVolume( buffer ) } );
 
 		}
 
 		result.userData = result.userData ?? {};
 		result.userData.lightProbeVolumes = loaded;
+
+	}
+
+}
+
+/**
+ * The glTF bufferView a volume points to, checked before three's loader reads it (three does not
+ * check these, and fails deep inside with a TypeError): an object whose `buffer` is an index into
+ * `buffers`, with integer `byteOffset` ≥ 0 and `byteLength` ≥ 0 that fit a known buffer length.
+ */
+function checkBufferView( where: string, json: { bufferViews?: unknown[]; buffers?: unknown[] }, index: number ): void {
+
+	const view = json.bufferViews![ index ] as { buffer?: unknown; byteOffset?: unknown; byteLength?: unknown } | null;
+	if ( view === null || typeof view !== 'object' ) throw new BakedVolumeError( 'json', `${where}: bufferViews[${index}] must be an object.` );
+	const bufferCount = Array.isArray( json.buffers ) ? json.buffers.length : 0;
+	const buffer = view.buffer, offset = view.byteOffset ?? 0, length = view.byteLength;
+	if ( typeof buffer !== 'number' || ! Number.isInteger( buffer ) || buffer < 0 || buffer >= bufferCount ) {
+
+		throw new BakedVolumeError( 'range', `${where}: bufferViews[${index}].buffer is ${JSON.stringify( buffer )}; expected a buffer index (0..${bufferCount - 1}).` );
+
+	}
+
+	const isSize = ( v: unknown ): v is number => typeof v === 'number' && Number.isInteger( v ) && v >= 0;
+	if ( ! isSize( offset ) || ! isSize( length ) ) {
+
+		throw new BakedVolumeError( 'json', `${where}: bufferViews[${index}] needs integer byteOffset ≥ 0 and byteLength ≥ 0, got ${JSON.stringify( offset )} and ${JSON.stringify( length )}.` );
+
+	}
+
+	const bufferDef = json.buffers![ buffer ] as { byteLength?: unknown } | null;
+	if ( bufferDef === null || typeof bufferDef !== 'object' ) throw new BakedVolumeError( 'json', `${where}: buffers[${buffer}] must be an object.` );
+	const size = bufferDef.byteLength;
+	if ( isSize( size ) && offset + length > size ) {
+
+		throw new BakedVolumeError( 'truncated', `${where}: bufferViews[${index}] (bytes ${offset}..${offset + length}) runs past the end of buffers[${buffer}] (${size} bytes).` );
 
 	}
 

@@ -1,5 +1,6 @@
 import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
-import { isProbeRole, PROBE_ROLES } from '../roles.js';
+import { isProbeRole, PROBE_ROLES, type RuleReject, type RuleViolation } from '../roles.js';
+import { POSITION_LIMIT, SH_LIMIT, firstBeyond, isStorableText } from '../validate.js';
 import { BakedVolumeError, type BakedVolumeErrorCode } from './BakedVolumeError.js';
 import type { BakedCapture, BakedCaptureSettings } from './bakedVolumeTypes.js';
 
@@ -49,13 +50,37 @@ export function checkFinite( where: string, name: string, values: ArrayLike<numb
 
 }
 
-// A lone UTF-16 surrogate has no UTF-8 encoding (TextEncoder would silently write U+FFFD).
-const LONE_SURROGATE = /[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/;
-
 /** A string storable as UTF-8 ('utf8' for a lone surrogate). */
 export function checkText( where: string, name: string, text: string ): void {
 
-	if ( LONE_SURROGATE.test( text ) ) fail( 'utf8', where, `${name} has a lone surrogate and cannot be stored as UTF-8.` );
+	if ( ! isStorableText( text ) ) fail( 'utf8', where, `${name} has a lone surrogate and cannot be stored as UTF-8.` );
+
+}
+
+const REJECT_CODES: Record<RuleViolation, BakedVolumeErrorCode> = { type: 'argument', count: 'count', range: 'range', text: 'utf8' };
+
+/** The codec's {@link RuleReject} for the shared rules of src/roles.ts: a BakedVolumeError of the matching code. */
+export function codecReject( where: string ): RuleReject {
+
+	return ( kind, message ) => fail( REJECT_CODES[ kind ], where, message );
+
+}
+
+/** Finite positions ('nan') with every |coordinate| ≤ POSITION_LIMIT ('range'). */
+export function checkPositions( where: string, positions: ArrayLike<number> ): void {
+
+	checkFinite( where, 'positions', positions );
+	const i = firstBeyond( positions, POSITION_LIMIT );
+	if ( i >= 0 ) fail( 'range', where, `positions[${i}] is ${positions[ i ]}; probe coordinates must be within ±${POSITION_LIMIT.toExponential()}.` );
+
+}
+
+/** Finite SH ('nan') with every |value| ≤ SH_LIMIT ('range'). */
+export function checkSH( where: string, name: string, sh: ArrayLike<number> ): void {
+
+	checkFinite( where, name, sh );
+	const i = firstBeyond( sh, SH_LIMIT );
+	if ( i >= 0 ) fail( 'range', where, `${name}[${i}] is ${sh[ i ]}; probe SH values must be within ±${SH_LIMIT.toPrecision( 3 )}.` );
 
 }
 

@@ -36,7 +36,14 @@ function buildTables(): Uint32Array {
  * CRC-32 of `bytes[ start, end )`, as zlib's `crc32()` computes it.
  * @returns An unsigned 32-bit value.
  */
-export function crc32( bytes: Uint8Array, start = 0, end = bytes.length ): number {
+export function crc32( bytes: Uint8Array, start = 0, end = bytes?.length ): number {
+
+	if ( ! ( bytes instanceof Uint8Array ) ) throw new TypeError( 'crc32: bytes must be a Uint8Array.' );
+	if ( ! Number.isInteger( start ) || ! Number.isInteger( end ) || start < 0 || end < start || end > bytes.length ) {
+
+		throw new RangeError( `crc32: need integers 0 ≤ start ≤ end ≤ bytes.length (${bytes.length}), got start ${start}, end ${end}.` );
+
+	}
 
 	const t = tables ?? ( tables = buildTables() );
 	let c = 0xFFFFFFFF;

@@ -1,4 +1,4 @@
-import type { ProbeRole } from '../roles.js';
+import { checkZoneName, checkZoneProbes, type ProbeRole } from '../roles.js';
 import { BakedVolumeError } from './BakedVolumeError.js';
 import { crc32 } from './crc32.js';
 import { float16Table } from './float16.js';
@@ -6,7 +6,7 @@ import {
 	align8, BAKED_ROLES, BAKED_SECTION, BAKED_VOLUME_MAGIC, BAKED_VOLUME_VERSION_MAJOR,
 	ENTRY_SIZE, FLAG_SH_FLOAT16, HEADER_SIZE, KNOWN_SECTIONS, LITTLE_ENDIAN, SECTION_REQUIRED, sectionName,
 } from './bakedVolumeFormat.js';
-import { boxOf, checkBox, checkCapture, checkFinite, checkTetrahedralization, fail } from './checks.js';
+import { boxOf, checkBox, checkCapture, checkFinite, checkPositions, checkSH, checkTetrahedralization, codecReject, fail } from './checks.js';
 import type { BakedCapture, BakedVolumeData, BakedZone } from './bakedVolumeTypes.js';
 
 /*
@@ -175,7 +175,7 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	const mta = section( BAKED_SECTION.METADATA, null, false, 'UTF-8 text' );
 
 	const positions = readTyped( Float64Array, view, pos.offset, 3 * probeCount );
-	checkFinite( where, 'positions', positions );
+	checkPositions( where, positions );
 
 	let sh: Float32Array;
 	if ( half ) {
@@ -193,7 +193,7 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	} else {
 
 		sh = readTyped( Float32Array, view, shs.offset, 27 * probeCount );
-		checkFinite( where, 'sh', sh );
+		checkSH( where, 'sh', sh );
 
 	}
 
@@ -240,6 +240,9 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	const zones: BakedZone[] = [];
 	if ( zns ) {
 
+		// The zone rules of src/roles.ts, which the runtime applies too: unique names, ≥ 1 probe each.
+		const reject = codecReject( where ), seen = new Set<string>();
+
 		let at = zns.offset;
 		const end = zns.offset + zns.length;
 		for ( let z = 0; z < zoneCount; z ++ ) {
@@ -250,10 +253,9 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 			const size = 16 + align8( nameLength ) + align8( 4 * count ) + 48 * boxes;
 			if ( size > end - at ) fail( 'count', where, `zone ${z} declares ${nameLength} name bytes, ${count} probes and ${boxes} boxes: ${size} bytes, but ${end - at} are left in the ZONE section.` );
 			at += 16;
-			const name = readString( where, `zones[${z}].name`, bytes, at, nameLength );
+			const name = checkZoneName( readString( where, `zones[${z}].name`, bytes, at, nameLength ), z, seen, reject );
 			at += align8( nameLength );
-			const probes = readTyped( Uint32Array, view, at, count );
-			for ( let i = 0; i < count; i ++ ) if ( probes[ i ] >= probeCount ) fail( 'range', where, `zones[${z}].probes[${i}] = ${probes[ i ]} is not a probe index (0..${probeCount - 1}).` );
+			const probes = checkZoneProbes( readTyped( Uint32Array, view, at, count ), `zones[${z}].probes`, probeCount, reject );
 			at += align8( 4 * count );
 			const zoneBounds = readTyped( Float64Array, view, at, 6 * boxes );
 			checkFinite( where, `zones[${z}].bounds`, zoneBounds );

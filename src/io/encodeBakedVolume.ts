@@ -19,6 +19,7 @@ const utf8Encoder = new TextEncoder();
 export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBakedVolumeOptions = {} ): ArrayBuffer {
 
 	const where = 'encodeBakedVolume';
+	if ( options === null || typeof options !== 'object' ) fail( 'argument', where, 'options must be an object { precision? }.' );
 	const precision = options.precision ?? 'float32';
 	if ( precision !== 'float16' && precision !== 'float32' ) fail( 'argument', where, `precision is ${JSON.stringify( precision )}; expected "float16" or "float32".` );
 	const data = validateBakedVolume( input, where );

@@ -17,6 +17,7 @@ export const FLOAT16_MAX = 65504;
  */
 export function toFloat16Bits( value: number ): number {
 
+	if ( typeof value !== 'number' ) throw new TypeError( `toFloat16Bits: value must be a number, got ${typeof value}.` );
 	f32[ 0 ] = value;
 	const x = u32[ 0 ];
 	const sign = ( x >>> 16 ) & 0x8000;
@@ -50,6 +51,7 @@ export function toFloat16Bits( value: number ): number {
 /** The value of binary16 bits (NaN and ±Infinity patterns decode to NaN and ±Infinity). */
 export function fromFloat16Bits( bits: number ): number {
 
+	if ( ! Number.isInteger( bits ) || bits < 0 || bits > 0xFFFF ) throw new RangeError( `fromFloat16Bits: bits must be an integer in 0..65535, got ${String( bits )}.` );
 	const sign = bits & 0x8000 ? - 1 : 1;
 	const e = ( bits >>> 10 ) & 0x1F;
 	const m = bits & 0x3FF;

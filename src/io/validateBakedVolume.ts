@@ -1,5 +1,7 @@
-import { isProbeRole, PROBE_ROLES, type ProbeRole } from '../roles.js';
-import { boxOf, checkBox, checkCapture, checkFinite, checkTetrahedralization, checkText, fail, numbers } from './checks.js';
+import { checkProbeNames, checkProbeRoles, checkZoneName, checkZoneProbes } from '../roles.js';
+import {
+	boxOf, checkBox, checkCapture, checkFinite, checkPositions, checkSH, checkTetrahedralization, checkText, codecReject, fail, numbers,
+} from './checks.js';
 import type { BakedVolumeData, BakedVolumeInput, BakedZone } from './bakedVolumeTypes.js';
 
 /**
@@ -14,15 +16,13 @@ export function validateBakedVolume( input: BakedVolumeInput, where = 'validateB
 	const positionsIn = numbers( where, 'positions', input.positions, 3 );
 	const probeCount = positionsIn.length / 3;
 	if ( probeCount < 1 ) fail( 'count', where, 'positions holds no probe.' );
-	checkFinite( where, 'positions', positionsIn );
+	checkPositions( where, positionsIn );
 	const positions = positionsIn instanceof Float64Array ? positionsIn : Float64Array.from( positionsIn );
 
 	const shIn = numbers( where, 'sh', input.sh, 27 );
 	if ( shIn.length !== 27 * probeCount ) fail( 'count', where, `sh has ${shIn.length} values; ${probeCount} probes need 27 each (${27 * probeCount}).` );
-	checkFinite( where, 'sh', shIn );
+	checkSH( where, 'sh', shIn );
 	const sh = shIn instanceof Float32Array ? shIn : Float32Array.from( shIn );
-	// Float32 storage: a finite float64 beyond ±3.4e38 would become Infinity.
-	if ( ! ( shIn instanceof Float32Array ) ) checkFinite( where, 'sh (as float32)', sh );
 
 	let tetrahedra: Uint32Array = new Uint32Array( 0 ), neighbors: Int32Array = new Int32Array( 0 );
 	if ( input.tetrahedra !== undefined || input.neighbors !== undefined ) {
@@ -34,71 +34,25 @@ export function validateBakedVolume( input: BakedVolumeInput, where = 'validateB
 
 	}
 
-	const names: string[] = [];
-	if ( input.names !== undefined ) {
-
-		if ( ! Array.isArray( input.names ) ) fail( 'argument', where, 'names must be an array of strings.' );
-		if ( input.names.length !== probeCount ) fail( 'count', where, `names has ${input.names.length} entries for ${probeCount} probes.` );
-		for ( let i = 0; i < probeCount; i ++ ) {
-
-			const name = input.names[ i ];
-			if ( typeof name !== 'string' ) fail( 'argument', where, `names[${i}] is not a string.` );
-			checkText( where, `names[${i}]`, name );
-			names.push( name );
-
-		}
-
-	} else {
-
-		for ( let i = 0; i < probeCount; i ++ ) names.push( '' );
-
-	}
-
-	const roles: ProbeRole[] = [];
-	if ( input.roles !== undefined ) {
-
-		if ( ! Array.isArray( input.roles ) ) fail( 'argument', where, 'roles must be an array of strings.' );
-		if ( input.roles.length !== probeCount ) fail( 'count', where, `roles has ${input.roles.length} entries for ${probeCount} probes.` );
-		for ( let i = 0; i < probeCount; i ++ ) {
-
-			const role = input.roles[ i ];
-			if ( ! isProbeRole( role ) ) fail( 'range', where, `roles[${i}] is ${JSON.stringify( role ) ?? String( role )}; expected one of ${PROBE_ROLES.join( ', ' )}.` );
-			roles.push( role );
-
-		}
-
-	} else {
-
-		for ( let i = 0; i < probeCount; i ++ ) roles.push( 'fill' );
-
-	}
-
+	// The rules of src/roles.ts, which the runtime applies too: a file written here always loads.
+	const reject = codecReject( where );
+	const names = checkProbeNames( input.names, probeCount, reject );
+	const roles = checkProbeRoles( input.roles, probeCount, reject );
 	const zones: BakedZone[] = [];
 	if ( input.zones !== undefined ) {
 
 		if ( ! Array.isArray( input.zones ) ) fail( 'argument', where, 'zones must be an array of { name, probes, bounds? }.' );
+		const seen = new Set<string>();
 		for ( let z = 0; z < input.zones.length; z ++ ) {
 
 			const zone = input.zones[ z ];
 			if ( zone === null || typeof zone !== 'object' ) fail( 'argument', where, `zones[${z}] must be an object { name, probes, bounds? }.` );
-			if ( typeof zone.name !== 'string' ) fail( 'argument', where, `zones[${z}].name must be a string.` );
-			checkText( where, `zones[${z}].name`, zone.name );
-			const probes = numbers( where, `zones[${z}].probes`, zone.probes, 1 );
-			for ( let i = 0; i < probes.length; i ++ ) {
-
-				const p = probes[ i ];
-				if ( ! ( p >= 0 && p < probeCount && p === Math.floor( p ) ) ) fail( 'range', where, `zones[${z}].probes[${i}] = ${p} is not a probe index (0..${probeCount - 1}).` );
-
-			}
-
+			const name = checkZoneName( zone.name, z, seen, reject );
+			const probes = checkZoneProbes( zone.probes, `zones[${z}].probes`, probeCount, reject );
 			const bounds = zone.bounds === undefined ? [] : numbers( where, `zones[${z}].bounds`, zone.bounds, 6 );
 			checkFinite( where, `zones[${z}].bounds`, bounds );
 			for ( let b = 0; b < bounds.length; b += 6 ) checkBox( where, `zones[${z}].bounds`, bounds, b );
-			zones.push( {
-				name: zone.name,
-				probes: probes instanceof Uint32Array ? probes : Uint32Array.from( probes ),
-				bounds: bounds instanceof Float64Array ? bounds : Float64Array.from( bounds ),
-			} );
+			zones.push( { name, probes, bounds: bounds instanceof Float64Array ? bounds : Float64Array.from( bounds ) } );
 
 		}
 

@@ -1,6 +1,6 @@
 import type { Object3D, Scene, WebGLRenderer } from 'three';
 import { boundsOf } from '../geometry/boundsOf.js';
-import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
+import { assertRenderer, assertScene } from '../capture/captureSettings.js';
 import { blendSH } from '../interpolation/blendSH.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
@@ -9,17 +9,19 @@ import {
 	type BakedCapture, type BakedVolumeData, type BakedVolumeInput, type BakedVolumeJSON, type EncodeBakedVolumeOptions,
 } from '../io/index.js';
 import { readProbeNames, readProbeRoles, type ProbeRole } from '../roles.js';
-import { SH_FLOATS, assertPoints, assertSH } from '../validate.js';
-import { parametersFromBakedData, toBakedVolumeInput } from './bakedVolumeData.js';
-import { captureWithBounces } from './captureBounces.js';
-import { captureProbes } from './captureProbes.js';
+import { SH_FLOATS, assertOptions, assertProbePositions, assertProbeSH } from '../validate.js';
+import { checkBakedData, parametersFromBakedData, toBakedVolumeInput } from './bakedVolumeData.js';
+import { captureVolume } from './captureBounces.js';
+import { CAPTURE_ACCESS, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
+import { createVolumeInterpolator } from './createVolumeInterpolator.js';
 import type {
 	AddOptions, AddProbeOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters, ProbeOccluders, ProbePosition, SampleOptions,
 } from './LightProbeVolumeOptions.js';
-import { createLitObject, disposeLitObject, updateLitObject, type LitObject } from './litObjects.js';
+import { assertObject3D, createLitObject, disposeLitObject, reportBadBlend, updateLitObject, type LitObject } from './litObjects.js';
 import { ProbeEdits } from './ProbeEdits.js';
 import { ProbeWeighting, assertInterpolator, invalidateVisibility, zonedProbeField } from './ProbeWeighting.js';
 import { ProbeZones, zoneIndexOf } from './ProbeZones.js';
+import { assertSHTarget, readPosition } from './volumeArguments.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
 import type { ProbeVolumeUniforms } from './patchMaterial.js';
 
@@ -116,21 +118,22 @@ export class LightProbeVolume {
 
 		}
 
-		const count = assertPoints( 'LightProbeVolume', 'positions', parameters.positions, 1 );
+		const count = assertProbePositions( 'LightProbeVolume', 'positions', parameters.positions, 1 );
 		this.positions = Float64Array.from( parameters.positions );
 		this.sh = new Float32Array( SH_FLOATS * count );
 		if ( parameters.sh !== undefined ) {
 
-			assertSH( 'LightProbeVolume', 'sh', parameters.sh, count );
+			assertProbeSH( 'LightProbeVolume', 'sh', parameters.sh, count );
 			this.sh.set( parameters.sh );
 
 		}
 
 		this.names = readProbeNames( 'LightProbeVolume', parameters.names, count );
 		this.roles = readProbeRoles( 'LightProbeVolume', parameters.roles, count );
+		assertOptions( 'LightProbeVolume', 'guard', parameters.guard );
 		this.interpolator = parameters.interpolator !== undefined
 			? assertInterpolator( 'LightProbeVolume', parameters.interpolator, count )
-			: createProbeInterpolator( this.positions );
+			: createVolumeInterpolator( this.positions );
 		this.zones = parameters.zones !== undefined ? new ProbeZones( parameters.zones, this.positions ) : null;
 		// 1 % of the probes' bounding-box diagonal: the default re-test distance of the guard.
 		const box = boundsOf( this.positions );
@@ -159,6 +162,7 @@ export class LightProbeVolume {
 	 */
 	setOccluders( occluders: ProbeOccluders | null, options?: VisibilityGuardOptions ): this {
 
+		assertOptions( 'LightProbeVolume.setOccluders', 'options', options );
 		if ( occluders === null ) this.guard = null;
 		else this.guard = occluders instanceof VisibilityGuard ? occluders : new VisibilityGuard( occluders, options );
 		for ( const entry of this.lit ) invalidateVisibility( entry );
@@ -202,21 +206,32 @@ export class LightProbeVolume {
 
 	/**
 	 * Captures every probe from the scene on the GPU and fills {@link LightProbeVolume.sh}.
-	 * Registered objects are hidden while capturing. On a lost context the SH already held stay.
+	 * Registered objects are hidden while capturing. All or nothing: the results are staged and
+	 * put into the volume (SH, dirty set, `captureSettings`) only when every probe and pass is
+	 * done, so a capture that fails — a lost context, a throwing callback — changes nothing.
 	 * With `options.bounces` = n, captures n + 1 times, adding a bounce of diffuse interreflection
 	 * each time (as `captureBounces`, which also returns the statistics of each pass).
 	 */
 	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
 
-		if ( options.bounces !== undefined ) {
-
-			await captureWithBounces( 'LightProbeVolume.capture', this, renderer, scene, { ...options, bounces: options.bounces } );
-			return this;
-
-		}
-
-		this.captureSettings = await captureProbes( this, this.lit, this.edits.dirty, renderer, scene, options );
+		await captureVolume( 'LightProbeVolume.capture', this, renderer, scene, options );
 		return this;
+
+	}
+
+	/**
+	 * What a capture needs of the volume: its registered objects, and the commit of a finished
+	 * capture — SH and dirty set ({@link ProbeEdits.commitCapture}), then the capture settings.
+	 */
+	[ CAPTURE_ACCESS ](): CaptureAccess {
+
+		const commit = ( captured: CapturedProbes ) => {
+
+			if ( this.edits.commitCapture( captured ) ) this.captureSettings = captured.settings;
+
+		};
+
+		return { lit: this.lit, commit };
 
 	}
 
@@ -229,9 +244,19 @@ export class LightProbeVolume {
 		renderer: WebGLRenderer, scene: Scene, options: Omit<LightProbeVolumeCaptureOptions, 'indices'> = {},
 	): Promise<this> {
 
+		const where = 'LightProbeVolume.recaptureDirty';
+		assertRenderer( where, renderer );
+		assertScene( where, scene );
+		assertOptions( where, 'options', options );
+		if ( options !== undefined && ( options as LightProbeVolumeCaptureOptions ).indices !== undefined ) {
+
+			throw new TypeError( `${where}: options.indices is not taken (the dirty probes are captured); use capture().` );
+
+		}
+
 		const indices = this.dirtyProbes();
-		if ( indices.length === 0 ) return this;
-		return this.capture( renderer, scene, { ...options, indices } );
+		if ( indices.length > 0 ) await captureVolume( where, this, renderer, scene, { ...options, indices } );
+		return this;
 
 	}
 
@@ -335,6 +360,8 @@ export class LightProbeVolume {
 	 */
 	static fromBakedData( data: BakedVolumeData, parameters: BakedVolumeParameters = {} ): LightProbeVolume {
 
+		checkBakedData( 'LightProbeVolume.fromBakedData', data );
+		assertOptions( 'LightProbeVolume.fromBakedData', 'parameters', parameters );
 		const volume = new LightProbeVolume( { ...parameters, ...parametersFromBakedData( data ) } );
 		volume.captureSettings = data.capture;
 		volume.metadata = data.metadata;
@@ -345,18 +372,23 @@ export class LightProbeVolume {
 	/**
 	 * Loads a baked binary file written by {@link LightProbeVolume.toArrayBuffer} (or another
 	 * writer of docs/format.md). A truncated, corrupted, newer-version or hostile file throws a
-	 * `BakedVolumeError` naming the problem.
+	 * `BakedVolumeError` naming the problem; every file the decoder accepts loads.
 	 */
 	static fromArrayBuffer( buffer: ArrayBuffer | ArrayBufferView, parameters?: BakedVolumeParameters ): LightProbeVolume {
 
+		assertOptions( 'LightProbeVolume.fromArrayBuffer', 'parameters', parameters );
 		return LightProbeVolume.fromBakedData( decodeBakedVolume( buffer ), parameters );
 
 	}
 
-	/** Loads the JSON form (an object or its text), with the same checks as {@link LightProbeVolume.fromArrayBuffer}. */
+	/**
+	 * Loads the JSON form (an object or its text), with the same checks as
+	 * {@link LightProbeVolume.fromArrayBuffer}: malformed text is a `BakedVolumeError` ('json').
+	 */
 	static fromJSON( json: unknown, parameters?: BakedVolumeParameters ): LightProbeVolume {
 
-		return LightProbeVolume.fromBakedData( bakedVolumeFromJSON( typeof json === 'string' ? JSON.parse( json ) : json ), parameters );
+		assertOptions( 'LightProbeVolume.fromJSON', 'parameters', parameters );
+		return LightProbeVolume.fromBakedData( bakedVolumeFromJSON( json ), parameters );
 
 	}
 
@@ -368,15 +400,12 @@ export class LightProbeVolume {
 	 */
 	sample( position: ProbePosition, target: Float32Array = new Float32Array( SH_FLOATS ), options: SampleOptions = {} ): Float32Array {
 
-		const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
-		if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) {
-
-			throw new RangeError( `LightProbeVolume.sample: position must be three finite numbers, got (${x}, ${y}, ${z}).` );
-
-		}
-
+		const where = 'LightProbeVolume.sample';
+		const [ x, y, z ] = readPosition( where, position );
+		assertSHTarget( where, target );
+		assertOptions( where, 'options', options );
 		const zone = options.zone !== undefined
-			? zoneIndexOf( 'LightProbeVolume.sample', this.zones, options.zone )
+			? zoneIndexOf( where, this.zones, options.zone )
 			: ( this.zones ? this.zones.zoneAt( x, y, z ) : - 1 );
 		const weighting = this.weighting;
 		weighting.weigh( x, y, z, zone, - 1, null );
@@ -392,12 +421,8 @@ export class LightProbeVolume {
 	 */
 	add( object: Object3D, options: AddOptions = {} ): this {
 
-		if ( ! object || ( object as { isObject3D?: boolean } ).isObject3D !== true ) {
-
-			throw new TypeError( 'LightProbeVolume.add: object must be a three.js Object3D.' );
-
-		}
-
+		assertObject3D( 'LightProbeVolume.add', object );
+		assertOptions( 'LightProbeVolume.add', 'options', options );
 		if ( this.lit.some( ( entry ) => entry.object === object ) ) return this;
 		const fixedZone = options.zone !== undefined ? zoneIndexOf( 'LightProbeVolume.add', this.zones, options.zone ) : - 1;
 		const entry = createLitObject( object, options, fixedZone, () => zonedProbeField( this, fixedZone ), this.lit );
@@ -410,6 +435,7 @@ export class LightProbeVolume {
 	/** Stops lighting an object: its materials are restored (clones made by `add()` are disposed). */
 	remove( object: Object3D ): this {
 
+		assertObject3D( 'LightProbeVolume.remove', object );
 		const index = this.lit.findIndex( ( entry ) => entry.object === object );
 		if ( index < 0 ) return this;
 		const [ entry ] = this.lit.splice( index, 1 );
@@ -424,6 +450,7 @@ export class LightProbeVolume {
 	 */
 	getZone( object: Object3D ): string | null {
 
+		assertObject3D( 'LightProbeVolume.getZone', object );
 		const entry = this.lit.find( ( candidate ) => candidate.object === object );
 		return entry && entry.zone >= 0 && this.zones ? this.zones.zones[ entry.zone ].name : null;
 
@@ -432,6 +459,7 @@ export class LightProbeVolume {
 	/** The uniforms `update()` writes for a registered object, or null. */
 	getUniforms( object: Object3D ): ProbeVolumeUniforms | null {
 
+		assertObject3D( 'LightProbeVolume.getUniforms', object );
 		return this.lit.find( ( entry ) => entry.object === object )?.uniforms ?? null;
 
 	}
@@ -440,11 +468,21 @@ export class LightProbeVolume {
 	 * Once per frame, before rendering: locates every registered object (walking from last
 	 * frame's cell) in its zone or the whole volume, drops the probes it cannot see when
 	 * occluders are set, blends its probes' SH and writes its irradiance matrices. Allocation-free.
+	 * Never uploads a non-finite value: an object whose blend is not finite (SH written into `sh`
+	 * directly, bypassing the checks) gets zero matrices (no probe light), and update() then throws
+	 * a RangeError naming it and the probe, after updating the others.
 	 */
 	update(): void {
 
 		const lit = this.lit, weighting = this.weighting, zones = this.zones, sh = this.sh;
-		for ( let i = 0, n = lit.length; i < n; i ++ ) updateLitObject( lit[ i ], weighting, zones, sh );
+		let bad = - 1;
+		for ( let i = 0, n = lit.length; i < n; i ++ ) {
+
+			if ( ! updateLitObject( lit[ i ], weighting, zones, sh ) && bad < 0 ) bad = i;
+
+		}
+
+		if ( bad >= 0 ) reportBadBlend( 'LightProbeVolume.update', lit[ bad ], sh );
 
 	}
 

@@ -2,13 +2,15 @@ import { blendSH } from '../interpolation/blendSH.js';
 import { IncrementalTetrahedralMesh } from '../interpolation/IncrementalTetrahedralMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import { PROBE_ROLES, isProbeRole, type ProbeRole } from '../roles.js';
+import { checkName, checkRole, runtimeReject, type ProbeRole } from '../roles.js';
 import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
-import { SH_FLOATS, assertSH } from '../validate.js';
+import { SH_FLOATS, assertOptions, assertProbeSH } from '../validate.js';
+import type { CapturedProbes } from './captureProbes.js';
 import type { AddProbeOptions, ProbePosition } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
 import { MAX_WEIGHTS, invalidateVisibility } from './ProbeWeighting.js';
 import type { ProbeZones } from './ProbeZones.js';
+import { readPosition } from './volumeArguments.js';
 
 /** The fields of a `LightProbeVolume` that {@link ProbeEdits} reads and replaces. */
 export interface EditedVolume {
@@ -62,12 +64,35 @@ export class ProbeEdits {
 
 	}
 
-	/** Whether probe id `index` is in use (false for removed probes and out-of-range ids). */
+	/** Whether probe id `index` is in use (false for removed probes, out-of-range ids and non-integers). */
 	isActive( index: number ): boolean {
 
+		if ( ! Number.isInteger( index ) || index < 0 || index >= this.volume.count ) return false;
 		const mesh = this.volume.interpolator;
-		if ( mesh instanceof IncrementalTetrahedralMesh ) return mesh.isActive( index );
-		return Number.isInteger( index ) && index >= 0 && index < this.volume.count;
+		return mesh instanceof IncrementalTetrahedralMesh ? mesh.isActive( index ) : true;
+
+	}
+
+	/**
+	 * Puts a finished capture into the volume, all at once: each captured probe gets its SH and
+	 * leaves the dirty set — unless it was removed while the capture ran (skipped) or moved (it
+	 * gets the SH but stays dirty). An empty capture changes nothing.
+	 * @returns Whether anything was captured.
+	 */
+	commitCapture( captured: CapturedProbes ): boolean {
+
+		if ( captured.indices.length === 0 ) return false;
+		const sh = this.volume.sh, positions = this.volume.positions, at = captured.positions;
+		captured.indices.forEach( ( index, k ) => {
+
+			if ( ! this.isActive( index ) ) return;
+			sh.set( captured.sh.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index );
+			const moved = positions[ 3 * index ] !== at[ 3 * k ] || positions[ 3 * index + 1 ] !== at[ 3 * k + 1 ]
+				|| positions[ 3 * index + 2 ] !== at[ 3 * k + 2 ];
+			if ( ! moved ) this.dirty.delete( index );
+
+		} );
+		return true;
 
 	}
 
@@ -89,15 +114,12 @@ export class ProbeEdits {
 
 		const where = 'LightProbeVolume.addProbe', volume = this.volume;
 		const [ x, y, z ] = readPosition( where, position );
-		const { name = '', role = 'fill', sh } = options;
-		if ( typeof name !== 'string' ) throw new TypeError( `${where}: options.name must be a string, got ${typeof name}.` );
-		if ( ! isProbeRole( role ) ) {
-
-			throw new RangeError( `${where}: options.role is "${role}"; expected one of ${PROBE_ROLES.join( ', ' )}.` );
-
-		}
-
-		if ( sh !== undefined ) assertSH( where, 'options.sh', sh, 1 );
+		assertOptions( where, 'options', options );
+		const { name = '', role = 'fill', sh } = options ?? {};
+		const reject = runtimeReject( where );
+		checkName( name, 'options.name', reject );
+		checkRole( role, 'options.role', reject );
+		if ( sh !== undefined ) assertProbeSH( where, 'options.sh', sh, 1 );
 		const mesh = this.editableMesh( where );
 		if ( sh === undefined ) {
 
@@ -200,26 +222,5 @@ export class ProbeEdits {
 		}
 
 	}
-
-}
-
-/** `{ x, y, z }` or `[ x, y, z ]` as three finite numbers. */
-function readPosition( where: string, position: ProbePosition ): [ number, number, number ] {
-
-	if ( ! position || typeof position !== 'object' ) {
-
-		const got = position === null ? 'null' : typeof position;
-		throw new TypeError( `${where}: position must be { x, y, z } or [ x, y, z ], got ${got}.` );
-
-	}
-
-	const [ x, y, z ] = 'x' in position ? [ position.x, position.y, position.z ] : [ position[ 0 ], position[ 1 ], position[ 2 ] ];
-	if ( ! Number.isFinite( x ) || ! Number.isFinite( y ) || ! Number.isFinite( z ) ) {
-
-		throw new RangeError( `${where}: position must be three finite numbers, got (${x}, ${y}, ${z}).` );
-
-	}
-
-	return [ x, y, z ];
 
 }

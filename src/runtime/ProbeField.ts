@@ -1,4 +1,5 @@
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+import { SH_LIMIT, firstBeyond } from '../validate.js';
 
 /**
  * What the large-object lighting classes read: an interpolation structure and its probes' SH —
@@ -28,8 +29,18 @@ export function assertProbeField( where: string, field: unknown ): asserts field
 
 }
 
+/** {@link assertProbeField}, and its SH finite and within ±`SH_LIMIT`: for constructors, before they change anything. */
+export function assertUsableProbeField( where: string, field: unknown ): asserts field is ProbeField {
+
+	assertProbeField( where, field );
+	const sh = field.sh, i = firstBeyond( sh, SH_LIMIT );
+	if ( i >= 0 ) throw new RangeError( `${where}: field.sh[${i}] is ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}.` );
+
+}
+
 /**
  * Whether `sh` differs from `copy` (length or any value); when it does, checks `sh` is finite and
+ * within ±`SH_LIMIT` (so nothing non-finite is ever uploaded) and
  * returns a copy to keep (a new array only when the length changed), else null. Allocation-free
  * when nothing changed: meant for per-frame `update()` calls.
  */
@@ -44,11 +55,8 @@ export function trackSH( where: string, sh: Float32Array, copy: Float32Array | n
 
 	}
 
-	for ( let i = 0, n = sh.length; i < n; i ++ ) {
-
-		if ( ! Number.isFinite( sh[ i ] ) ) throw new RangeError( `${where}: field.sh[${i}] is ${sh[ i ]}; probe SH must be finite.` );
-
-	}
+	const i = firstBeyond( sh, SH_LIMIT );
+	if ( i >= 0 ) throw new RangeError( `${where}: field.sh[${i}] is ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}.` );
 
 	const next = copy !== null && copy.length === sh.length ? copy : new Float32Array( sh.length );
 	next.set( sh );

@@ -1,6 +1,7 @@
 import { Box3, Vector3, type Material, type Mesh, type Object3D } from 'three';
-import { assertProbeField, type ProbeField } from './ProbeField.js';
-import { ProbeVolumeTexture, type ProbeVolumeTextureOptions } from './ProbeVolumeTexture.js';
+import { assertProbeField, assertUsableProbeField, type ProbeField } from './ProbeField.js';
+import { ProbeVolumeTexture, checkVolumeTextureOptions, type ProbeVolumeTextureOptions } from './ProbeVolumeTexture.js';
+import { assertOptions } from '../validate.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 
 /** Options of {@link ProbeTextureLighting}: the texture's plus intensity and padding. */
@@ -56,11 +57,14 @@ export class ProbeTextureLighting {
 
 		const where = 'ProbeTextureLighting';
 		if ( ! object || ( object as { isObject3D?: boolean } ).isObject3D !== true ) throw new TypeError( `${where}: object must be a three.js Object3D.` );
-		assertProbeField( where, field );
+		assertUsableProbeField( where, field );
+		assertOptions( where, 'options', options );
 		const intensity = options.intensity ?? 1;
-		if ( ! Number.isFinite( intensity ) ) throw new RangeError( `${where}: options.intensity must be a finite number, got ${intensity}.` );
-		this.padding = options.padding ?? 0;
-		if ( ! ( Number.isFinite( this.padding ) && this.padding >= 0 ) ) throw new RangeError( `${where}: options.padding must be a finite number ≥ 0, got ${options.padding}.` );
+		if ( typeof intensity !== 'number' || ! Number.isFinite( intensity ) ) throw new RangeError( `${where}: options.intensity must be a finite number, got ${String( intensity )}.` );
+		const padding = options.padding ?? 0;
+		if ( ! ( typeof padding === 'number' && Number.isFinite( padding ) && padding >= 0 ) ) throw new RangeError( `${where}: options.padding must be a finite number ≥ 0, got ${String( options.padding )}.` );
+		checkVolumeTextureOptions( where, options );
+		this.padding = padding;
 
 		this.object = object;
 		this.volumeTexture = new ProbeVolumeTexture( field, this.bounds(), options );
@@ -84,7 +88,7 @@ export class ProbeTextureLighting {
 			let changed = false;
 			const replacement = materials.map( ( material ) => {
 
-				if ( ( material as { isMeshStandardMaterial?: boolean } ).isMeshStandardMaterial !== true ) return material;
+				if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return material;
 				// A clone: the original may light other objects, outside this texture's box.
 				const copy = material.clone();
 				patchMaterial( copy, { source: 'texture', uniforms: this.uniforms } );

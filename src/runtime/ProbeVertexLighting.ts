@@ -1,7 +1,8 @@
 import { BufferAttribute, InterleavedBuffer, InterleavedBufferAttribute, Matrix3, type BufferGeometry, type Material, type Mesh } from 'three';
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceAt } from '../sh/irradiance.js';
-import { assertProbeField, trackSH, type ProbeField } from './ProbeField.js';
+import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
+import { assertOptions } from '../validate.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
 
 /** Options of {@link ProbeVertexLighting}. */
@@ -104,11 +105,12 @@ export class ProbeVertexLighting {
 		const candidate = mesh as Mesh & { isSkinnedMesh?: boolean; isInstancedMesh?: boolean };
 		if ( ! candidate || candidate.isMesh !== true ) throw new TypeError( `${where}: mesh must be a three.js Mesh.` );
 		if ( candidate.isSkinnedMesh === true || candidate.isInstancedMesh === true ) throw new TypeError( `${where}: skinned and instanced meshes are not supported (their vertices move on the GPU); use LightProbeVolume.add().` );
-		assertProbeField( where, field );
+		assertUsableProbeField( where, field );
+		assertOptions( where, 'options', options );
 		const output = options.output ?? 'irradiance';
 		if ( output !== 'irradiance' && output !== 'sh' ) throw new RangeError( `${where}: options.output is "${String( output )}"; expected 'irradiance' or 'sh'.` );
 		const intensity = options.intensity ?? 1;
-		if ( ! Number.isFinite( intensity ) ) throw new RangeError( `${where}: options.intensity must be a finite number, got ${intensity}.` );
+		if ( typeof intensity !== 'number' || ! Number.isFinite( intensity ) ) throw new RangeError( `${where}: options.intensity must be a finite number, got ${String( intensity )}.` );
 
 		const geometry = mesh.geometry;
 		const position = geometry?.getAttribute( 'position' );
@@ -154,7 +156,7 @@ export class ProbeVertexLighting {
 		const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 		const replaced = materials.map( ( material ) => {
 
-			if ( ( material as { isMeshStandardMaterial?: boolean } ).isMeshStandardMaterial !== true ) return material;
+			if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return material;
 			// A clone: the original may be shared with meshes that have no probe attributes.
 			const copy = material.clone();
 			patchMaterial( copy, { source: output === 'irradiance' ? 'vertexIrradiance' : 'vertexSH', uniforms: this.uniforms } );

@@ -1,6 +1,7 @@
 import { Data3DTexture, DataUtils, FloatType, HalfFloatType, LinearFilter, RGBAFormat, Vector3 } from 'three';
 import { blendSH } from '../interpolation/blendSH.js';
-import { assertProbeField, trackSH, type ProbeField } from './ProbeField.js';
+import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
+import { assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 
 /** Options of {@link ProbeVolumeTexture}. */
 export interface ProbeVolumeTextureOptions {
@@ -22,6 +23,46 @@ export interface ProbeVolumeTextureOptions {
 	 * `OES_texture_float_linear` for the trilinear filter (without it the texture samples black).
 	 */
 	type?: 'half' | 'float';
+
+}
+
+/**
+ * Checks the options of a {@link ProbeVolumeTexture} (also for `ProbeTextureLighting`, which
+ * passes them on), with errors starting with `where`.
+ * @returns The texel type and the largest node count per axis, defaults filled in.
+ */
+export function checkVolumeTextureOptions( where: string, options: unknown ): { type: 'half' | 'float'; maxResolution: number } {
+
+	assertOptions( where, 'options', options );
+	const o = ( options ?? {} ) as ProbeVolumeTextureOptions;
+	const type = o.type ?? 'half';
+	if ( type !== 'half' && type !== 'float' ) throw new RangeError( `${where}: options.type is "${String( type )}"; expected 'half' or 'float'.` );
+	const maxResolution = o.maxResolution ?? 64;
+	if ( ! Number.isInteger( maxResolution ) || maxResolution < 2 || maxResolution > 256 ) {
+
+		throw new RangeError( `${where}: options.maxResolution must be an integer in 2..256, got ${describeValue( maxResolution )}.` );
+
+	}
+
+	if ( o.texelSize !== undefined && ! ( typeof o.texelSize === 'number' && Number.isFinite( o.texelSize ) && o.texelSize > 0 ) ) {
+
+		throw new RangeError( `${where}: options.texelSize must be a positive finite number, got ${describeValue( o.texelSize )}.` );
+
+	}
+
+	if ( o.resolution !== undefined ) {
+
+		const r = o.resolution as unknown;
+		const values = typeof r === 'number' ? [ r ] : Array.isArray( r ) || ArrayBuffer.isView( r ) ? Array.from( r as ArrayLike<unknown> ) : null;
+		if ( values === null || ( values.length !== 1 && values.length !== 3 ) || values.some( ( v ) => typeof v !== 'number' || ! Number.isFinite( v ) || v < 1 ) ) {
+
+			throw new RangeError( `${where}: options.resolution must be a number ≥ 1 or [ x, y, z ] of them, got ${describeValue( r )}.` );
+
+		}
+
+	}
+
+	return { type, maxResolution };
 
 }
 
@@ -81,22 +122,10 @@ export class ProbeVolumeTexture {
 	constructor( field: ProbeField, bounds: BoundsLike, options: ProbeVolumeTextureOptions = {} ) {
 
 		const where = 'ProbeVolumeTexture';
-		assertProbeField( where, field );
-		const type = options.type ?? 'half';
-		if ( type !== 'half' && type !== 'float' ) throw new RangeError( `${where}: options.type is "${String( type )}"; expected 'half' or 'float'.` );
-		const maxResolution = options.maxResolution ?? 64;
-		if ( ! Number.isInteger( maxResolution ) || maxResolution < 2 || maxResolution > 256 ) throw new RangeError( `${where}: options.maxResolution must be an integer in 2..256, got ${maxResolution}.` );
-		if ( options.texelSize !== undefined && ! ( Number.isFinite( options.texelSize ) && options.texelSize > 0 ) ) throw new RangeError( `${where}: options.texelSize must be a positive finite number, got ${options.texelSize}.` );
-		if ( options.resolution !== undefined ) {
-
-			const values = typeof options.resolution === 'number' ? [ options.resolution ] : Array.from( options.resolution );
-			if ( ( values.length !== 1 && values.length !== 3 ) || values.some( ( v ) => ! Number.isFinite( v ) || v < 1 ) ) {
-
-				throw new RangeError( `${where}: options.resolution must be a number ≥ 1 or [ x, y, z ] of them, got ${String( options.resolution )}.` );
-
-			}
-
-		}
+		assertUsableProbeField( where, field );
+		const { type, maxResolution } = checkVolumeTextureOptions( where, options );
+		const lo = ( bounds as BoundsLike | null )?.min, hi = ( bounds as BoundsLike | null )?.max;
+		if ( ! lo || ! hi ) throw new TypeError( `${where}: bounds must be { min, max } (e.g. a Box3), got ${describeValue( bounds )}.` );
 
 		this.field = field;
 		this.type = type;
@@ -119,9 +148,9 @@ export class ProbeVolumeTexture {
 
 		const where = 'ProbeVolumeTexture.setBounds';
 		if ( this.disposed ) throw new Error( `${where}: called after dispose().` );
-		const lo = bounds?.min, hi = bounds?.max;
+		const lo = ( bounds as BoundsLike | null )?.min, hi = ( bounds as BoundsLike | null )?.max;
 		const corners = lo && hi ? [ lo.x, lo.y, lo.z, hi.x, hi.y, hi.z ] : [];
-		if ( corners.length !== 6 || corners.some( ( v ) => ! Number.isFinite( v ) ) ) throw new RangeError( `${where}: bounds must be { min, max } with finite x, y, z (an empty Box3 has infinite corners).` );
+		if ( ! lo || ! hi || corners.some( ( v ) => typeof v !== 'number' || ! Number.isFinite( v ) ) ) throw new RangeError( `${where}: bounds must be { min, max } with finite x, y, z (an empty Box3 has infinite corners).` );
 		const size = [ hi.x - lo.x, hi.y - lo.y, hi.z - lo.z ];
 		if ( size.some( ( s ) => s < 0 ) ) throw new RangeError( `${where}: bounds.min must not exceed bounds.max, got size (${size.join( ', ' )}).` );
 		const longest = Math.max( ...size );
@@ -169,7 +198,14 @@ export class ProbeVolumeTexture {
 	/** World position of grid node (ix, iy, iz). */
 	nodePosition( ix: number, iy: number, iz: number, target = new Vector3() ): Vector3 {
 
-		const r = this.resolution;
+		const where = 'ProbeVolumeTexture.nodePosition', r = this.resolution;
+		if ( ! [ ix, iy, iz ].every( ( v ) => typeof v === 'number' && Number.isFinite( v ) ) ) {
+
+			throw new RangeError( `${where}: ix, iy, iz must be finite numbers, got (${ix}, ${iy}, ${iz}).` );
+
+		}
+
+		if ( ( target as { isVector3?: boolean } | null )?.isVector3 !== true ) throw new TypeError( `${where}: target must be a Vector3.` );
 		return target.set(
 			this.min.x + ( this.max.x - this.min.x ) * ix / ( r.x - 1 ),
 			this.min.y + ( this.max.y - this.min.y ) * iy / ( r.y - 1 ),
@@ -186,6 +222,7 @@ export class ProbeVolumeTexture {
 
 		const where = 'ProbeVolumeTexture.resample';
 		if ( this.disposed ) throw new Error( `${where}: called after dispose().` );
+		assertOptionalBoolean( where, 'force', force );
 		assertProbeField( where, this.field );
 		const copy = trackSH( where, this.field.sh, this.shCopy );
 		if ( copy !== null ) this.shCopy = copy;

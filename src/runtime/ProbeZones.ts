@@ -1,6 +1,7 @@
-import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
-import { assertArrayLike } from '../validate.js';
+import { checkZoneName, checkZoneProbes, runtimeReject } from '../roles.js';
+import { DegenerateInputError } from '../tetrahedra/tetrahedralize.js';
+import { createVolumeInterpolator } from './createVolumeInterpolator.js';
 
 /** A box given by its corners, e.g. a three.js `Box3`. */
 export interface BoxLike {
@@ -13,13 +14,17 @@ export interface BoxLike {
 /** One lighting zone, as passed to `LightProbeVolume` (`zones`). */
 export interface ProbeZoneDefinition {
 
-	/** Unique, non-empty name, used by `volume.add( object, { zone: name } )`. */
+	/**
+	 * Name, unique among the volume's zones ('' is a name like any other), used by
+	 * `volume.add( object, { zone: name } )`; any string UTF-8 can hold.
+	 */
 	name: string;
 
 	/**
-	 * Indices of the volume's probes lighting this zone (at least 3, not all on one line; 4 not
-	 * in one plane for a 3D zone — coplanar probes get a planar triangulation). A probe may belong
-	 * to several zones, e.g. one in a doorway.
+	 * Indices of the volume's probes lighting this zone, at least one. 4 not in one plane give a
+	 * tetrahedralization, coplanar probes a planar triangulation, and fewer than 3 distinct or
+	 * collinear ones (a corridor) interpolate along their line. A probe may belong to several
+	 * zones, e.g. one in a doorway.
 	 */
 	probes: ArrayLike<number>;
 
@@ -41,7 +46,7 @@ export interface ProbeZone {
 	/** The volume's probe indices of this zone; the interpolator's probe k is `probes[k]`. */
 	readonly probes: Uint32Array;
 
-	/** Tetrahedralization (or planar triangulation) of the zone's probes alone. */
+	/** Tetrahedralization (or planar triangulation, or line) of the zone's probes alone. */
 	readonly interpolator: ProbeInterpolator;
 
 	/** min x, y, z, max x, y, z per box (empty: no bounds). */
@@ -62,47 +67,42 @@ export class ProbeZones {
 	/**
 	 * @param definitions See {@link ProbeZoneDefinition}.
 	 * @param positions The volume's probe positions, x, y, z per probe.
-	 * @throws for a missing or duplicate name, an empty zone, probe indices that are not integers
-	 * in range, malformed bounds, or zone probes that are fewer than 3 distinct or all on a line.
+	 * @throws TypeError / RangeError for a non-string or duplicate name, a zone without probes,
+	 * probe indices that are not integers in range, or malformed bounds (the rules of the baked
+	 * format, src/roles.ts); DegenerateInputError when a zone's probes cannot be interpolated at all.
 	 */
 	constructor( definitions: readonly ProbeZoneDefinition[], positions: ArrayLike<number> ) {
 
 		const where = 'LightProbeVolume';
 		if ( ! Array.isArray( definitions ) ) throw new TypeError( `${where}: zones must be an array of { name, probes, bounds? }.` );
 		const count = positions.length / 3;
+		const reject = runtimeReject( where );
 		const names = new Set<string>();
 		this.zones = definitions.map( ( definition, z ) => {
 
 			if ( ! definition || typeof definition !== 'object' ) throw new TypeError( `${where}: zones[${z}] must be an object { name, probes, bounds? }.` );
-			const name = definition.name;
-			if ( typeof name !== 'string' || name.length === 0 ) throw new TypeError( `${where}: zones[${z}].name must be a non-empty string.` );
-			if ( names.has( name ) ) throw new RangeError( `${where}: zone name "${name}" is used twice.` );
-			names.add( name );
-			assertArrayLike( where, `zones[${z}] ("${name}").probes`, definition.probes );
-			if ( definition.probes.length === 0 ) throw new RangeError( `${where}: zone "${name}" has no probes.` );
-			const probes = new Uint32Array( definition.probes.length );
-			for ( let k = 0; k < probes.length; k ++ ) {
-
-				const index = definition.probes[ k ];
-				if ( ! Number.isInteger( index ) || index < 0 || index >= count ) throw new RangeError( `${where}: zone "${name}" probes[${k}] is ${index}, not a probe index (0..${count - 1}).` );
-				probes[ k ] = index;
-
-			}
-
+			const name = checkZoneName( definition.name, z, names, reject );
+			const probes = checkZoneProbes( definition.probes, `zones[${z}] (${JSON.stringify( name )}).probes`, count, reject );
 			const local = new Float64Array( 3 * probes.length );
-			probes.forEach( ( index, k ) => local.set( [ positions[ 3 * index ], positions[ 3 * index + 1 ], positions[ 3 * index + 2 ] ], 3 * k ) );
+			probes.forEach( ( index, k ) => {
+
+				for ( let a = 0; a < 3; a ++ ) local[ 3 * k + a ] = positions[ 3 * index + a ];
+
+			} );
 			let interpolator: ProbeInterpolator;
 			try {
 
-				interpolator = createProbeInterpolator( local );
+				interpolator = createVolumeInterpolator( local );
 
 			} catch ( error ) {
 
-				throw new RangeError( `${where}: zone "${name}" cannot be interpolated (${probes.length} probes): ${( error as Error ).message}` );
+				if ( ! ( error instanceof DegenerateInputError ) ) throw error;
+				const message = `${where}: zone ${JSON.stringify( name )} cannot be interpolated (${probes.length} probes): ${error.message}`;
+				throw new DegenerateInputError( error.reason, message );
 
 			}
 
-			return { name, probes, interpolator, bounds: boundsOf( name, definition.bounds ) };
+			return { name, probes: Uint32Array.from( probes ), interpolator, bounds: boundsOf( name, definition.bounds ) };
 
 		} );
 
@@ -140,8 +140,9 @@ export class ProbeZones {
  * The index of the zone named `name`, for an option naming a zone.
  * @throws Error when there are no zones; RangeError, listing the zones, when none has that name.
  */
-export function zoneIndexOf( where: string, zones: ProbeZones | null, name: string ): number {
+export function zoneIndexOf( where: string, zones: ProbeZones | null, name: unknown ): number {
 
+	if ( typeof name !== 'string' ) throw new TypeError( `${where}: options.zone must be a zone name (a string), got ${typeof name}.` );
 	if ( zones === null ) throw new Error( `${where}: zone "${name}" given, but the volume has no zones.` );
 	const index = zones.indexOf( name );
 	if ( index < 0 ) {

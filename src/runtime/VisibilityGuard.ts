@@ -1,7 +1,7 @@
 import type { Object3D } from 'three';
 import { TriangleBVH } from '../geometry/TriangleBVH.js';
 import { gatherWorldGeometry } from '../geometry/gatherWorldGeometry.js';
-import { assertArrayLike, assertNumber } from '../validate.js';
+import { assertArrayLike, assertInteger, assertNumber, assertOptions, describeValue } from '../validate.js';
 
 /** How many of the nearest probes {@link VisibilityGuard.nearestVisible} tries before giving up. */
 const NEAREST_CANDIDATES = 8;
@@ -59,6 +59,7 @@ export class VisibilityGuard {
 	 */
 	constructor( occluders: TriangleBVH | ArrayLike<number> | Object3D | readonly Object3D[], options: VisibilityGuardOptions = {} ) {
 
+		assertOptions( 'VisibilityGuard', 'options', options );
 		this.bvh = toBVH( occluders );
 		const blockedWeight = options.blockedWeight ?? 0;
 		assertNumber( 'VisibilityGuard', 'options.blockedWeight', blockedWeight );
@@ -81,6 +82,13 @@ export class VisibilityGuard {
 	 */
 	segmentBlocked( ax: number, ay: number, az: number, bx: number, by: number, bz: number ): boolean {
 
+		if ( typeof ax !== 'number' || typeof ay !== 'number' || typeof az !== 'number' || typeof bx !== 'number' || typeof by !== 'number'
+			|| typeof bz !== 'number' || ( ax + ay + az + bx + by + bz ) * 0 !== 0 ) {
+
+			throw new RangeError( `VisibilityGuard.segmentBlocked: the ends must be six finite numbers, got (${[ ax, ay, az, bx, by, bz ].join( ', ' )}).` );
+
+		}
+
 		return this.bvh.segmentBlocked( ax, ay, az, bx, by, bz );
 
 	}
@@ -95,7 +103,25 @@ export class VisibilityGuard {
 	 * blocked); 0 means every probe with weight was blocked, and the weights are then left
 	 * unchanged (see {@link VisibilityGuard.nearestVisible}).
 	 */
-	filterWeights( x: number, y: number, z: number, positions: ArrayLike<number>, indices: ArrayLike<number>, weights: Float32Array | Float64Array | number[], count: number ): number {
+	filterWeights(
+		x: number, y: number, z: number, positions: ArrayLike<number>, indices: ArrayLike<number>,
+		weights: Float32Array | Float64Array | number[], count: number
+	): number {
+
+		checkWeights( 'VisibilityGuard.filterWeights', weights, count );
+		assertArrayLike( 'VisibilityGuard.filterWeights', 'positions', positions );
+		assertArrayLike( 'VisibilityGuard.filterWeights', 'indices', indices );
+		if ( indices.length < count ) throw new RangeError( `VisibilityGuard.filterWeights: indices has ${indices.length} entries, fewer than count ${count}.` );
+		for ( let k = 0; k < count; k ++ ) {
+
+			const index = indices[ k ];
+			if ( ! ( Number.isInteger( index ) && index >= 0 && 3 * index + 2 < positions.length ) ) {
+
+				throw new RangeError( `VisibilityGuard.filterWeights: indices[${k}] = ${index} is not a probe of positions (${positions.length / 3} probes).` );
+
+			}
+
+		}
 
 		let mask = 0;
 		for ( let k = 0; k < count; k ++ ) {
@@ -119,6 +145,8 @@ export class VisibilityGuard {
 	applyMask( mask: number, weights: Float32Array | Float64Array | number[], count: number ): number {
 
 		if ( mask === 0 ) return 1;
+		if ( typeof mask !== 'number' || ! Number.isInteger( mask ) ) throw new RangeError( `VisibilityGuard.applyMask: mask must be an integer bit mask, got ${describeValue( mask )}.` );
+		checkWeights( 'VisibilityGuard.applyMask', weights, count );
 		let visible = 0, total = 0;
 		for ( let k = 0; k < count; k ++ ) {
 
@@ -149,6 +177,12 @@ export class VisibilityGuard {
 	 */
 	nearestVisible( x: number, y: number, z: number, positions: ArrayLike<number>, candidates: ArrayLike<number> | null ): number {
 
+		const where = 'VisibilityGuard.nearestVisible';
+		assertNumber( where, 'x', x );
+		assertNumber( where, 'y', y );
+		assertNumber( where, 'z', z );
+		assertArrayLike( where, 'positions', positions );
+		if ( candidates !== null ) assertArrayLike( where, 'candidates', candidates );
 		const indices = this.nearestIndices, distances = this.nearestDistances;
 		let found = 0;
 		const n = candidates ? candidates.length : positions.length / 3;
@@ -211,7 +245,10 @@ export class VisibilityGuard {
 					let blocked = edges.get( key );
 					if ( blocked === undefined ) {
 
-						blocked = this.segmentBlocked( positions[ 3 * a ], positions[ 3 * a + 1 ], positions[ 3 * a + 2 ], positions[ 3 * b ], positions[ 3 * b + 1 ], positions[ 3 * b + 2 ] );
+						blocked = this.segmentBlocked(
+							positions[ 3 * a ], positions[ 3 * a + 1 ], positions[ 3 * a + 2 ],
+							positions[ 3 * b ], positions[ 3 * b + 1 ], positions[ 3 * b + 2 ]
+						);
 						edges.set( key, blocked );
 
 					}
@@ -229,6 +266,15 @@ export class VisibilityGuard {
 		return Uint32Array.from( leaking );
 
 	}
+
+}
+
+/** Weights an applyMask / filterWeights call may change: an array of at least `count` (1..32) entries. */
+function checkWeights( where: string, weights: unknown, count: unknown ): void {
+
+	assertArrayLike( where, 'weights', weights );
+	assertInteger( where, 'count', count, 0, 32 );
+	if ( weights.length < count ) throw new RangeError( `${where}: weights has ${weights.length} entries, fewer than count ${count}.` );
 
 }
 

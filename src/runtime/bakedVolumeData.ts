@@ -76,6 +76,47 @@ export function toBakedVolumeInput( volume: BakedSource ): BakedVolumeInput {
 }
 
 /**
+ * Checks the shape of decoded baked data given to `LightProbeVolume.fromBakedData`: an object
+ * with the typed arrays `decodeBakedVolume` returns, tetrahedra and neighbours of one length and
+ * every tetrahedron vertex a probe index (so a trusted mesh never reads out of range), bounds,
+ * capture settings and metadata. Values are checked by the constructor; the tetrahedra's
+ * orientation and links are trusted (the decoder checked them).
+ */
+export function checkBakedData( where: string, data: unknown ): asserts data is BakedVolumeData {
+
+	const d = data as Partial<Record<keyof BakedVolumeData, unknown>> | null;
+	const expect = ( name: string, ok: boolean, what: string ) => {
+
+		if ( ! ok ) throw new TypeError( `${where}: data.${name} must be ${what} (data as decodeBakedVolume or bakedVolumeFromJSON return it).` );
+
+	};
+
+	if ( ! d || typeof d !== 'object' ) throw new TypeError( `${where}: data must be decoded baked data (as decodeBakedVolume returns it).` );
+	expect( 'positions', d.positions instanceof Float64Array, 'a Float64Array' );
+	expect( 'sh', d.sh instanceof Float32Array, 'a Float32Array' );
+	expect( 'tetrahedra', d.tetrahedra instanceof Uint32Array && d.tetrahedra.length % 4 === 0, 'a Uint32Array of 4 indices per tetrahedron' );
+	const tetrahedra = d.tetrahedra as Uint32Array, count = ( d.positions as Float64Array ).length / 3;
+	expect( 'neighbors', d.neighbors instanceof Int32Array && d.neighbors.length === tetrahedra.length, 'an Int32Array as long as tetrahedra' );
+	for ( let i = 0; i < tetrahedra.length; i ++ ) {
+
+		if ( tetrahedra[ i ] >= count ) throw new RangeError( `${where}: data.tetrahedra[${i}] = ${tetrahedra[ i ]} is not a probe index (0..${count - 1}).` );
+
+	}
+
+	expect( 'zones', Array.isArray( d.zones ), 'an array of { name, probes, bounds }' );
+	expect( 'bounds', d.bounds instanceof Float64Array && d.bounds.length === 6, 'a Float64Array of 6 numbers' );
+	expect( 'capture', d.capture !== null && typeof d.capture === 'object', 'an object' );
+	expect( 'metadata', typeof d.metadata === 'string', 'a string' );
+	for ( const [ z, zone ] of ( d.zones as unknown[] ).entries() ) {
+
+		const bounds = ( zone as { bounds?: unknown } | null )?.bounds;
+		expect( `zones[${z}].bounds`, bounds instanceof Float64Array && bounds.length % 6 === 0, 'a Float64Array of 6 numbers per box' );
+
+	}
+
+}
+
+/**
  * The constructor parameters of decoded baked data: the stored tetrahedralization as the
  * interpolator (not checked again: the decoder did), or none (the default interpolator is built).
  */

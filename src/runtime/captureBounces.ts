@@ -1,5 +1,8 @@
 import { Layers, type BufferGeometry, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer } from 'three';
+import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { SH_FLOATS, assertInteger } from '../validate.js';
+import { CAPTURE_ACCESS, applyCapturedProbes, captureProbes, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
+import { checkCaptureOptions } from './checkCaptureOptions.js';
 import type { LightProbeVolume } from './LightProbeVolume.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
@@ -63,10 +66,12 @@ const MAX_BOUNCES = 16;
  * multiplies the added light by roughly the scene's mean albedo, so 2–3 bounces usually get
  * within a few per cent of the converged value.
  *
- * The static meshes keep their own look (colour, maps, emission): their materials are replaced by
- * patched clones that add the probe light to three's indirect diffuse term; geometries are cloned
- * for the bounce passes, so no user geometry is touched. Everything is restored when it returns —
- * also when a capture throws (the volume's SH then hold the last completed pass).
+ * The passes work on a staged copy of the SH: the volume receives the last pass (SH, dirty set,
+ * capture settings) only when every pass succeeded, so a capture that throws — a lost context, a
+ * throwing callback — leaves the volume exactly as it was. The static meshes keep their own look
+ * (colour, maps, emission): their materials are replaced by patched clones that add the probe
+ * light to three's indirect diffuse term; geometries are cloned for the bounce passes, so no user
+ * geometry is touched. Everything is restored when it returns, also when it throws.
  *
  * Stand-ins for indirect light the scene already has (an `AmbientLight` or `HemisphereLight` fill,
  * a faint emissive glow on every surface) would be counted twice: turn them off, or pass them in
@@ -80,7 +85,7 @@ const MAX_BOUNCES = 16;
  * const { passes } = await captureBounces( volume, renderer, scene, { bounces: 2, resolution: 32 } );
  * ```
  *
- * @param volume The probes; its `sh` receive each pass in turn.
+ * @param volume The probes; its `sh` receive the last pass.
  * @param renderer A WebGL2 renderer.
  * @param scene The scene to capture.
  * @param options See {@link CaptureBouncesOptions}.
@@ -93,17 +98,34 @@ export function captureBounces(
 
 }
 
-/** {@link captureBounces} with errors naming `where` (`LightProbeVolume.capture` calls it for its `bounces` option). */
+/**
+ * `LightProbeVolume.capture` and `recaptureDirty`, with errors naming `where`: one capture, or
+ * {@link captureWithBounces} when `options.bounces` is given. All or nothing: the volume changes
+ * only when everything was captured.
+ */
+export async function captureVolume(
+	where: string, volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions,
+): Promise<void> {
+
+	if ( options?.bounces !== undefined ) {
+
+		await captureWithBounces( where, volume, renderer, scene, { ...options, bounces: options.bounces } );
+		return;
+
+	}
+
+	const access = accessOf( where, volume );
+	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, options );
+	if ( indices.length > 0 ) access.commit( await captureProbes( volume, access.lit, indices, renderer, scene, { ...options, exclude } ) );
+
+}
+
+/** {@link captureBounces} with errors naming `where`. */
 export async function captureWithBounces(
 	where: string, volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions,
 ): Promise<CaptureBouncesResult> {
 
-	if ( ! volume || typeof volume.capture !== 'function' || ! ( volume.sh instanceof Float32Array ) ) {
-
-		throw new TypeError( `${where}: volume must be a LightProbeVolume.` );
-
-	}
-
+	const access = accessOf( where, volume );
 	if ( ! options || typeof options !== 'object' ) throw new TypeError( `${where}: options must be an object with at least { bounces }.` );
 	const { bounces, staticMeshes, hideInBounces, output = 'irradiance', onPass, ...capture } = options;
 	assertInteger( where, 'options.bounces', bounces, 0, MAX_BOUNCES );
@@ -114,9 +136,13 @@ export async function captureWithBounces(
 	}
 
 	if ( onPass !== undefined && typeof onPass !== 'function' ) throw new TypeError( `${where}: options.onPass must be a function.` );
-	// Consumed twice (default mesh selection and every capture): make it an array once.
-	if ( capture.exclude !== undefined ) capture.exclude = [ ...capture.exclude ];
-	const meshes = staticMeshes !== undefined ? checkMeshes( where, staticMeshes ) : findStaticMeshes( volume, scene, capture );
+	const given = staticMeshes !== undefined ? checkMeshes( where, staticMeshes ) : null;
+	if ( hideInBounces !== undefined && ( hideInBounces === null || typeof hideInBounces[ Symbol.iterator ] !== 'function' ) ) {
+
+		throw new TypeError( `${where}: options.hideInBounces must be an iterable (e.g. an array) of three.js Object3Ds.` );
+
+	}
+
 	const hidden = hideInBounces !== undefined ? [ ...hideInBounces ] : [];
 	hidden.forEach( ( object, i ) => {
 
@@ -128,24 +154,49 @@ export async function captureWithBounces(
 
 	} );
 
+	// `exclude` is consumed twice (default mesh selection and every capture): an array, read once.
+	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, capture );
+	const checked = { ...capture, exclude };
+	const meshes = given ?? findStaticMeshes( volume, scene, checked );
 	const start = now();
 	const passes: BouncePass[] = [];
+	// The SH as the passes make them; the volume gets the last pass once every pass is done.
+	const staged = new Float32Array( volume.sh );
+	let last: CapturedProbes | null = null;
 	const captureAndMeasure = async ( pass: number, lightingMs: number ) => {
 
 		const captureStart = now();
-		await volume.capture( renderer, scene, capture );
-		passes.push( { pass, meanL00: meanL00( volume.sh, capture.indices ), captureMs: now() - captureStart, lightingMs } );
-		onPass?.( pass, volume.sh );
+		last = await captureProbes( volume, access.lit, indices, renderer, scene, checked );
+		applyCapturedProbes( last, staged );
+		passes.push( { pass, meanL00: meanL00( staged, capture.indices ), captureMs: now() - captureStart, lightingMs } );
+		onPass?.( pass, staged );
 
 	};
 
 	await captureAndMeasure( 0, 0 );
 	const vertices = meshes.reduce( ( sum, mesh ) => sum + ( mesh.geometry.getAttribute( 'position' )?.count ?? 0 ), 0 );
-	if ( bounces === 0 || meshes.length === 0 ) return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
+	if ( bounces > 0 && meshes.length > 0 ) {
 
-	// The field the vertices sample: the volume's interpolator with the previous pass's SH, frozen,
-	// so the light on the walls does not change while (role groups of) probes are captured.
-	const field = { interpolator: volume.interpolator, sh: new Float32Array( volume.sh ) };
+		await bouncePasses( meshes, hidden, volume.interpolator, staged, output, bounces, captureAndMeasure );
+
+	}
+
+	access.commit( last! );
+	return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
+
+}
+
+/**
+ * Passes 1..bounces: the static meshes lit per vertex by the previous pass's SH (frozen, so the
+ * light on the walls does not change while role groups of probes are captured), the stand-ins
+ * hidden; everything restored afterwards, also when a pass throws.
+ */
+async function bouncePasses(
+	meshes: Mesh[], hidden: Object3D[], interpolator: ProbeInterpolator, staged: Float32Array, output: 'irradiance' | 'sh',
+	bounces: number, captureAndMeasure: ( pass: number, lightingMs: number ) => Promise<void>,
+): Promise<void> {
+
+	const field = { interpolator, sh: new Float32Array( staged ) };
 	const lightings: ProbeVertexLighting[] = [];
 	const swapped: { mesh: Mesh; geometry: BufferGeometry; material: Material | Material[] }[] = [];
 	const visibility = hidden.map( ( object ) => object.visible );
@@ -170,7 +221,7 @@ export async function captureWithBounces(
 			if ( pass > 1 ) {
 
 				lightingStart = now();
-				field.sh.set( volume.sh );
+				field.sh.set( staged );
 				for ( const lighting of lightings ) lighting.update();
 
 			}
@@ -194,7 +245,13 @@ export async function captureWithBounces(
 
 	}
 
-	return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
+}
+
+/** The volume's {@link CaptureAccess}; a TypeError when it is not a `LightProbeVolume`. */
+function accessOf( where: string, volume: LightProbeVolume ): CaptureAccess {
+
+	if ( typeof volume?.[ CAPTURE_ACCESS ] !== 'function' ) throw new TypeError( `${where}: volume must be a LightProbeVolume.` );
+	return volume[ CAPTURE_ACCESS ]();
 
 }
 

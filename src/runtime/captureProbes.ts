@@ -1,18 +1,17 @@
-import type { Scene, WebGLRenderer } from 'three';
+import type { Object3D, Scene, WebGLRenderer } from 'three';
 import { ProbeCapturer } from '../capture/ProbeCapturer.js';
 import type { BakedCapture } from '../io/index.js';
 import type { ProbeRole } from '../roles.js';
 import { makeIrradianceNonNegative, windowSH } from '../sh/windowSH.js';
-import { SH_FLOATS, assertArrayLike } from '../validate.js';
+import { SH_FLOATS } from '../validate.js';
 import { bakedCaptureSettings } from './bakedVolumeData.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
 
-/** The fields of a `LightProbeVolume` that {@link captureProbes} reads, and its `sh`, which it fills. */
+/** The fields of a `LightProbeVolume` that {@link captureProbes} reads (it writes nothing). */
 export interface CapturedVolume {
 
 	readonly positions: Float64Array;
-	readonly sh: Float32Array;
 	readonly roles: readonly ProbeRole[];
 	readonly count: number;
 	isProbeActive( index: number ): boolean;
@@ -20,24 +19,56 @@ export interface CapturedVolume {
 }
 
 /**
+ * The key of `LightProbeVolume`'s member that gives `captureBounces` the volume's registered
+ * objects and a way to commit a finished capture (not for users).
+ */
+export const CAPTURE_ACCESS: unique symbol = Symbol( 'three-capture-lighting.captureAccess' );
+
+/** What `LightProbeVolume[ CAPTURE_ACCESS ]()` returns. */
+export interface CaptureAccess {
+
+	/** The registered objects (hidden, or their probe light off, while capturing). */
+	readonly lit: readonly LitObject[];
+
+	/** Puts a finished capture into the volume (SH, dirty set, capture settings), all at once. */
+	commit( captured: CapturedProbes ): void;
+
+}
+
+/** The result of {@link captureProbes}, not yet in the volume: {@link applyCapturedProbes} puts it there. */
+export interface CapturedProbes {
+
+	/** The probes captured, in capture order. */
+	readonly indices: readonly number[];
+
+	/** Where each was captured: x, y, z per entry of `indices`. */
+	readonly positions: Float64Array;
+
+	/** 27 floats per entry of `indices`. */
+	readonly sh: Float32Array;
+
+	/** The settings to store with a bake (`LightProbeVolume.captureSettings`). */
+	readonly settings: BakedCapture;
+
+}
+
+/**
  * One capture of a volume's probes (`LightProbeVolume.capture` without bounces): the probes of
- * `options.indices` (default all live ones), in one pass per role with settings of its own, then
- * de-ringed or made non-negative. Objects lit in `'object'` mode (`hidden`) are hidden; large
- * objects stay visible with their probe light off. Captured probes leave `dirty`. On a lost
- * context the SH already held stay.
- * @returns The capture settings to store with a bake (`LightProbeVolume.captureSettings`).
+ * `indices` (checked by the caller), in one pass per role with settings of its own, then de-ringed
+ * or made non-negative. Objects lit in `'object'` mode (`hidden`) are hidden; large objects stay
+ * visible with their probe light off. Nothing of the volume changes: the result is staged, so a
+ * capture that fails in any pass (a lost context, a throwing callback) leaves every probe as it was.
+ * @param options Checked by the caller (`checkVolumeCaptureOptions`); `exclude` an array.
  */
 export async function captureProbes(
-	volume: CapturedVolume, lit: readonly LitObject[], dirty: Set<number>,
-	renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions,
-): Promise<BakedCapture> {
-
-	const where = 'LightProbeVolume.capture';
-	const indices = captureIndices( where, volume, options.indices );
+	volume: CapturedVolume, lit: readonly LitObject[], indices: readonly number[],
+	renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions & { exclude?: Object3D[] },
+): Promise<CapturedProbes> {
 
 	// Probes whose role has its own settings (paper 3.4: sky, bounce and reflection captures
 	// want different ranges and layers) are captured in their own pass.
 	const groups = new Map<string, number[]>();
+	const order: number[] = [];
 	for ( const index of indices ) {
 
 		const role = volume.roles[ index ];
@@ -46,13 +77,11 @@ export async function captureProbes(
 
 	}
 
+	for ( const group of groups.values() ) order.push( ...group );
+	const positions = new Float64Array( 3 * order.length );
+	order.forEach( ( index, k ) => positions.set( volume.positions.subarray( 3 * index, 3 * index + 3 ), 3 * k ) );
+	const sh = new Float32Array( SH_FLOATS * order.length );
 	const deringing = options.deringing ?? 0;
-	if ( ! ( deringing >= 0 && deringing <= 1 ) ) {
-
-		throw new RangeError( `${where}: options.deringing must be in [0, 1], got ${options.deringing}.` );
-
-	}
-
 	const nonNegative = options.nonNegative === true;
 	// Visitors are hidden; scenery lit by the probes (large objects) is seen as built: probe light off.
 	const exclude = [ ...lit.filter( ( entry ) => entry.hidden ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
@@ -66,30 +95,24 @@ export async function captureProbes(
 	}
 
 	for ( const [ uniform ] of intensities ) uniform.value = 0;
-	const total = indices.length;
+	const total = order.length;
 	let done = 0;
 	try {
 
 		for ( const [ role, group ] of groups ) {
 
 			const settings = { ...options, ...( role ? options.roles?.[ role as ProbeRole ] : {} ) };
-			const positions = new Float64Array( 3 * group.length );
-			group.forEach( ( index, k ) => positions.set( volume.positions.subarray( 3 * index, 3 * index + 3 ), 3 * k ) );
 			const capturer = new ProbeCapturer( renderer, settings );
 			try {
 
 				const start = done;
-				const captured = await capturer.capture( scene, positions, new Float32Array( SH_FLOATS * group.length ), {
+				const groupPositions = positions.subarray( 3 * start, 3 * ( start + group.length ) );
+				const captured = sh.subarray( SH_FLOATS * start, SH_FLOATS * ( start + group.length ) );
+				await capturer.capture( scene, groupPositions, captured, {
 					...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
 				} );
 				if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
 				else if ( deringing > 0 ) windowSH( captured, deringing, captured );
-				group.forEach( ( index, k ) => {
-
-					volume.sh.set( captured.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index );
-					dirty.delete( index );
-
-				} );
 				done += group.length;
 
 			} finally {
@@ -106,34 +129,13 @@ export async function captureProbes(
 
 	}
 
-	return bakedCaptureSettings( options );
+	return { indices: order, positions, sh, settings: bakedCaptureSettings( options ) };
 
 }
 
-/** `options.indices` checked (live probe ids), or every live probe. */
-function captureIndices( where: string, volume: CapturedVolume, requested: ArrayLike<number> | undefined ): number[] {
+/** Writes staged capture results into an SH array laid out like the volume's (27 floats per probe id). */
+export function applyCapturedProbes( captured: CapturedProbes, sh: Float32Array ): void {
 
-	if ( requested === undefined ) {
-
-		const indices: number[] = [];
-		for ( let i = 0; i < volume.count; i ++ ) if ( volume.isProbeActive( i ) ) indices.push( i );
-		return indices;
-
-	}
-
-	assertArrayLike( where, 'options.indices', requested );
-	const indices = Array.from( requested );
-	indices.forEach( ( index ) => {
-
-		if ( ! Number.isInteger( index ) || index < 0 || index >= volume.count ) {
-
-			throw new RangeError( `${where}: options.indices holds ${index}, not a probe index (0..${volume.count - 1}).` );
-
-		}
-
-		if ( ! volume.isProbeActive( index ) ) throw new RangeError( `${where}: options.indices holds ${index}, a removed probe.` );
-
-	} );
-	return indices;
+	captured.indices.forEach( ( index, k ) => sh.set( captured.sh.subarray( SH_FLOATS * k, SH_FLOATS * ( k + 1 ) ), SH_FLOATS * index ) );
 
 }

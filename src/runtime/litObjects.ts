@@ -1,7 +1,7 @@
 import { Box3, Matrix4, Vector3, type Material, type Mesh, type Object3D, type SkinnedMesh } from 'three';
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
-import { SH_FLOATS } from '../validate.js';
+import { SH_FLOATS, SH_LIMIT, assertInteger, assertNumber, assertOptionalBoolean, describeValue, firstBeyond } from '../validate.js';
 import type { AddOptions } from './LightProbeVolumeOptions.js';
 import { ProbeTextureLighting } from './ProbeTextureLighting.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
@@ -44,6 +44,10 @@ export interface LitObject extends VisibilityCache {
 
 let _warnedInstancing = false;
 
+// Local copies: read in update()'s per-object loop (an imported binding can cost a getter call each time).
+const BLEND_FLOATS = SH_FLOATS;
+const BLEND_SQUARES = 28 * SH_LIMIT * SH_LIMIT;
+
 /**
  * Builds the entry that lights `object` in the mode of `options`: the large-object lightings, or
  * the object's `MeshStandardMaterial`s patched — in place when only this object uses them, else as
@@ -56,6 +60,7 @@ export function createLitObject(
 	object: Object3D, options: AddOptions, fixedZone: number, field: () => ProbeField, lit: readonly LitObject[],
 ): LitObject {
 
+	checkAddOptions( options );
 	const entry: LitObject = {
 		object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
 		uniforms: {
@@ -78,12 +83,6 @@ export function createLitObject(
 
 	}
 
-	if ( mode !== 'object' ) {
-
-		throw new RangeError( `LightProbeVolume.add: options.mode must be 'object', 'vertex' or 'texture', got ${String( mode )}.` );
-
-	}
-
 	patchObjectMaterials( entry, options.perVertex, lit );
 	return entry;
 
@@ -102,15 +101,17 @@ export function disposeLitObject( entry: LitObject ): void {
 /**
  * One frame of an entry: large objects resample when they moved or the SH changed; an object-mode
  * entry is weighed at its anchor (in its zone, walking from last frame's cell, through the guard)
- * and its irradiance matrices written. Allocation-free.
+ * and its irradiance matrices written — zeros (no probe light) when the blend is not finite or
+ * far beyond ±SH_LIMIT (SH written into the volume's `sh` directly). Allocation-free.
+ * @returns false when the blend was refused (see {@link reportBadBlend}), else true.
  */
-export function updateLitObject( entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array ): void {
+export function updateLitObject( entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array ): boolean {
 
 	if ( entry.large !== null ) {
 
 		// Resample only when the object moved or the probes' SH changed (checked inside).
 		for ( let i = 0; i < entry.large.length; i ++ ) entry.large[ i ].update();
-		return;
+		return true;
 
 	}
 
@@ -131,8 +132,98 @@ export function updateLitObject( entry: LitObject, weighting: ProbeWeighting, zo
 	}
 
 	entry.hint = weighting.weigh( x, y, z, zone, entry.hint, entry );
-	blendSH( weighting.indices, weighting.weights, sh, entry.sh, weighting.count );
-	irradianceMatrices( entry.sh, entry.uniforms.probeVolumeMatrices.value );
+	const blend = blendSH( weighting.indices, weighting.weights, sh, entry.sh, weighting.count );
+	// Σ v² ≤ 28 · SH_LIMIT² holds for every blend of valid probes (each |v| ≤ SH_LIMIT, weights summing to 1)
+	// and bounds each |v| by 5.3 · SH_LIMIT, which keeps the matrices and the shader's nᵀMn finite in
+	// float32; NaN and ±Infinity fail it. Three running sums: no branch, no dependency chain of 27.
+	let r = 0, g = 0, b = 0;
+	for ( let i = 0; i < BLEND_FLOATS; i += 3 ) {
+
+		const vr = blend[ i ], vg = blend[ i + 1 ], vb = blend[ i + 2 ];
+		r += vr * vr; g += vg * vg; b += vb * vb;
+
+	}
+
+	const m = entry.uniforms.probeVolumeMatrices.value;
+	if ( ! ( r + g + b <= BLEND_SQUARES ) ) {
+
+		m.fill( 0 );
+		return false;
+
+	}
+
+	irradianceMatrices( blend, m );
+	return true;
+
+}
+
+/**
+ * Throws the RangeError for an entry whose blend {@link updateLitObject} refused: names the object
+ * and the first probe whose SH (written into the volume's `sh` directly) is not finite or beyond
+ * ±1e30, or the object's position when the probes are fine.
+ */
+export function reportBadBlend( where: string, entry: LitObject, sh: Float32Array ): never {
+
+	const name = entry.object.name ? `"${entry.object.name}"` : `(${entry.object.type} ${entry.object.uuid})`;
+	const i = firstBeyond( sh, SH_LIMIT );
+	const cause = i >= 0
+		? `probe ${Math.floor( i / SH_FLOATS )} holds sh[${i}] = ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}`
+		: 'its position is not finite';
+	throw new RangeError( `${where}: the blend for object ${name} is not finite (${cause}); its probe light is off (zero matrices).` );
+
+}
+
+/** Checks an argument is a three.js `Object3D`. */
+export function assertObject3D( where: string, object: unknown ): asserts object is Object3D {
+
+	if ( ( object as { isObject3D?: boolean } | null )?.isObject3D !== true ) {
+
+		throw new TypeError( `${where}: object must be a three.js Object3D, got ${describeValue( object )}.` );
+
+	}
+
+}
+
+/** The options of `LightProbeVolume.add`, checked before anything is patched. */
+function checkAddOptions( options: AddOptions ): void {
+
+	const where = 'LightProbeVolume.add';
+	assertOptionalBoolean( where, 'options.perVertex', options.perVertex );
+	assertOptionalBoolean( where, 'options.hideInCaptures', options.hideInCaptures );
+	if ( options.intensity !== undefined ) assertNumber( where, 'options.intensity', options.intensity );
+	if ( options.anchor !== undefined ) {
+
+		const a = options.anchor as { x?: unknown; y?: unknown; z?: unknown } | null;
+		if ( ! a || typeof a !== 'object' || ! [ a.x, a.y, a.z ].every( ( v ) => typeof v === 'number' && Number.isFinite( v ) ) ) {
+
+			throw new TypeError( `${where}: options.anchor must be { x, y, z } of finite numbers (e.g. a Vector3), got ${describeValue( options.anchor )}.` );
+
+		}
+
+	}
+
+	const mode = options.mode ?? 'object';
+	if ( mode !== 'object' && mode !== 'vertex' && mode !== 'texture' ) {
+
+		throw new RangeError( `${where}: options.mode must be 'object', 'vertex' or 'texture', got ${describeValue( mode )}.` );
+
+	}
+
+	const output = options.vertexOutput;
+	if ( output !== undefined && output !== 'irradiance' && output !== 'sh' ) {
+
+		throw new RangeError( `${where}: options.vertexOutput must be 'irradiance' or 'sh', got ${describeValue( output )}.` );
+
+	}
+
+	if ( options.texelSize !== undefined ) {
+
+		assertNumber( where, 'options.texelSize', options.texelSize );
+		if ( ! ( options.texelSize > 0 ) ) throw new RangeError( `${where}: options.texelSize must be > 0, got ${options.texelSize}.` );
+
+	}
+
+	if ( options.maxResolution !== undefined ) assertInteger( where, 'options.maxResolution', options.maxResolution, 2, 256 );
 
 }
 
@@ -199,7 +290,8 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 		let replacement: Material[] | null = null;
 		materials.forEach( ( material, i ) => {
 
-			if ( ( material as { isMeshStandardMaterial?: boolean } ).isMeshStandardMaterial !== true ) return;
+			// A null or undefined slot is drawn by nothing (three skips it): nothing to patch.
+			if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return;
 			if ( owned.has( material ) || ( getProbeVolumeUniforms( material ) !== null && ! entry.patched.includes( material ) ) ) {
 
 				const copy = material.clone();

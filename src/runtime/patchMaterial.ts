@@ -5,6 +5,7 @@ import {
 	probeVolumeNormalVert, probeVolumePars, probeVolumeSHAttributesVert, probeVolumeSHAttributesVertPars,
 	probeVolumeTexturePars, probeVolumeVertexSHPars,
 } from '../shaders.generated.js';
+import { assertNumber, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 
 /** The uniforms a patched material reads; write them yourself, or let a `LightProbeVolume` do it. */
 export interface ProbeVolumeUniforms {
@@ -90,6 +91,10 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 	}
 
+	assertOptions( 'patchMaterial', 'options', options );
+	assertOptionalBoolean( 'patchMaterial', 'options.perVertex', options.perVertex );
+	if ( options.intensity !== undefined ) assertNumber( 'patchMaterial', 'options.intensity', options.intensity );
+	if ( options.uniforms !== undefined ) checkUniforms( options.uniforms );
 	const existing = target[ PATCHED ];
 	if ( existing ) return existing.uniforms;
 
@@ -165,9 +170,36 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 }
 
+/** `options.uniforms` of {@link patchMaterial}: the three common uniforms, each `{ value }` of the right type. */
+function checkUniforms( uniforms: unknown ): void {
+
+	const u = uniforms as Partial<Record<keyof ProbeVolumeUniforms, { value?: unknown }>> | null;
+	const matrices = u?.probeVolumeMatrices?.value;
+	if ( ! ( matrices instanceof Float32Array && matrices.length >= 48 )
+		|| typeof u?.probeVolumeIntensity?.value !== 'number' || typeof u?.probeVolumeDirectScale?.value !== 'number' ) {
+
+		throw new TypeError( 'patchMaterial: options.uniforms must be ProbeVolumeUniforms: { probeVolumeMatrices: { value: Float32Array( 48 ) }, '
+			+ 'probeVolumeIntensity: { value: number }, probeVolumeDirectScale: { value: number } } (as patchMaterial returns them).' );
+
+	}
+
+}
+
+/** Checks a material argument: any three.js `Material`. */
+function assertMaterial( where: string, material: unknown ): void {
+
+	if ( ( material as { isMaterial?: boolean } | null )?.isMaterial !== true ) {
+
+		throw new TypeError( `${where}: material must be a three.js Material, got ${describeValue( material )}.` );
+
+	}
+
+}
+
 /** The uniforms of a patched material, or null when it is not patched. */
 export function getProbeVolumeUniforms( material: Material ): ProbeVolumeUniforms | null {
 
+	assertMaterial( 'getProbeVolumeUniforms', material );
 	return ( material as PatchedMaterial )[ PATCHED ]?.uniforms ?? null;
 
 }
@@ -175,6 +207,7 @@ export function getProbeVolumeUniforms( material: Material ): ProbeVolumeUniform
 /** Undoes {@link patchMaterial}: the material compiles as before on its next use. */
 export function unpatchMaterial( material: Material ): void {
 
+	assertMaterial( 'unpatchMaterial', material );
 	const target = material as PatchedMaterial;
 	const patch = target[ PATCHED ];
 	if ( ! patch ) return;

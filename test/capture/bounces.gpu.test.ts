@@ -333,7 +333,7 @@ describe.skipIf( ! ctx.renderer )( `captureBounces on a real GL context (headles
 
 	} );
 
-	it( 'a capture that throws in bounce pass 2: the error comes through, meshes, visibility and GPU memory are restored, the volume keeps pass 1', async () => {
+	it( 'a capture that throws in bounce pass 2: the error comes through, meshes, visibility and GPU memory are restored, the volume keeps what it had before (all or nothing)', async () => {
 
 		const s = restorationScene();
 		const render = () => renderToImage( renderer, gl, s.scene, s.view );
@@ -341,6 +341,7 @@ describe.skipIf( ! ctx.renderer )( `captureBounces on a real GL context (headles
 		await s.volume.capture( renderer, s.scene, { ...CAPTURE, resolution: 8 } );
 		render();
 		const baseline = { ...renderer.info.memory, programs: renderer.info.programs!.length };
+		const before = { sh: Array.from( s.volume.sh ), settings: structuredClone( s.volume.captureSettings ), dirty: s.volume.dirtyProbes() };
 
 		let pass = 0;
 		const kept: Float32Array[] = [];
@@ -351,7 +352,10 @@ describe.skipIf( ! ctx.renderer )( `captureBounces on a real GL context (headles
 		} );
 		await expect( failing ).rejects.toThrow( 'simulated failure' );
 		expect( kept.length ).toBe( 2 );
-		expect( Array.from( s.volume.sh ) ).toEqual( Array.from( kept[ 1 ] ) );
+		expect( Array.from( kept[ 1 ] ) ).not.toEqual( before.sh ); // pass 1 was captured, but only staged
+		expect( Array.from( s.volume.sh ) ).toEqual( before.sh );
+		expect( s.volume.captureSettings ).toEqual( before.settings );
+		expect( s.volume.dirtyProbes() ).toEqual( before.dirty );
 		expect( s.fill.visible ).toBe( true );
 		for ( const { mesh, geometry, material, attributes } of s.before ) {
 

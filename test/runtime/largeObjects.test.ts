@@ -270,7 +270,7 @@ describe( 'ProbeVolumeTexture: the field resampled on a grid, in three\'s LightP
 		expect( () => new ProbeVolumeTexture( volume, box, { type: 'byte' as 'half' } ) ).toThrow( /options.type is "byte"/ );
 		expect( () => new ProbeVolumeTexture( { interpolator: volume.interpolator, sh: new Float32Array( 27 ) }, box ) ).toThrow( /field.sh has length 27, expected 27 × 38/ );
 		volume.sh[ 0 ] = Infinity;
-		expect( () => new ProbeVolumeTexture( volume, box ) ).toThrow( /ProbeVolumeTexture.resample: field.sh\[0\] is Infinity/ );
+		expect( () => new ProbeVolumeTexture( volume, box ) ).toThrow( /ProbeVolumeTexture: field.sh\[0\] is Infinity; probe SH must be finite and within ±1\.00e\+30/ );
 
 	} );
 

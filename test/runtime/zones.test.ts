@@ -231,21 +231,43 @@ describe( 'LightProbeVolume zones', () => {
 
 	} );
 
+	it( 'zones of one probe, two, or a row (a corridor) interpolate along their line: exact for a linear field on it, constant across it, the end probe beyond the ends', () => {
+
+		const { positions, sh } = twoZones();
+		// Probes 0, 4, 8, 12 are ( x, 0, 0 ) for x = −3, −1, 1, 3; probes 0, 1 are ( −3, 0, 0 ), ( −3, 0, 2 ).
+		const volume = new LightProbeVolume( { positions, sh, zones: [
+			{ name: 'row', probes: [ 12, 0, 8, 4 ] }, { name: 'pair', probes: [ 0, 1 ] }, { name: '', probes: [ 9 ] },
+		] } );
+		const green = ( p: number[], zone: string ) => volume.sample( p, new Float32Array( 27 ), { zone } )[ 1 ];
+		for ( const x of [ - 3, - 2.5, - 1, 0, 0.3, 2.9 ] ) expect( green( [ x, 0, 0 ], 'row' ) ).toBeCloseTo( g( x, 0, 0 ), 6 );
+		expect( green( [ 0.3, 5, - 7 ], 'row' ) ).toBeCloseTo( g( 0.3, 0, 0 ), 6 ); // constant across the line
+		expect( green( [ 10, 0, 0 ], 'row' ) ).toBeCloseTo( g( 3, 0, 0 ), 6 ); // the end probe beyond the end
+		expect( green( [ - 10, 1, 1 ], 'row' ) ).toBeCloseTo( g( - 3, 0, 0 ), 6 );
+		for ( const z of [ 0, 0.5, 2 ] ) expect( green( [ - 3, 0, z ], 'pair' ) ).toBeCloseTo( g( - 3, 0, z ), 6 );
+		expectSH( volume.sample( [ 5, 5, 5 ], new Float32Array( 27 ), { zone: '' } ), sh.subarray( 27 * 9, 27 * 10 ) );
+		// A volume whose probes span no plane gets the same interpolation.
+		const row = subVolume( positions, sh, [ 0, 4, 8, 12 ] );
+		for ( const x of [ - 3, - 0.7, 1.2 ] ) expect( row.sample( [ x, 1, - 1 ] )[ 1 ] ).toBeCloseTo( g( x, 0, 0 ), 6 );
+		expectSH( subVolume( positions, sh, [ 7 ] ).sample( [ 0, 0, 0 ] ), sh.subarray( 27 * 7, 27 * 8 ) );
+
+	} );
+
 	it( 'bad zones get errors naming LightProbeVolume, the zone and the problem', () => {
 
 		const { positions, sh, zones } = twoZones();
 		const make = ( z: unknown ) => () => new LightProbeVolume( { positions, sh, zones: z as never } );
 		expect( make( { name: 'a' } ) ).toThrow( /LightProbeVolume: zones must be an array/ );
 		expect( make( [ null ] ) ).toThrow( /zones\[0\] must be an object/ );
-		expect( make( [ { name: '', probes: [ 0, 1, 2, 3 ] } ] ) ).toThrow( /zones\[0\]\.name must be a non-empty string/ );
-		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 4 ] }, { name: 'a', probes: [ 0, 1, 2, 4 ] } ] ) ).toThrow( /zone name "a" is used twice/ );
-		expect( make( [ { name: 'a', probes: [] } ] ) ).toThrow( /zone "a" has no probes/ );
+		// The zone rules of the baked format (src/roles.ts): any UTF-8 name, '' included, unique; ≥ 1 probe index.
+		expect( make( [ { name: 3, probes: [ 0, 1, 2, 3 ] } ] ) ).toThrow( /LightProbeVolume: zones\[0\]\.name is number 3; expected a string/ );
+		expect( make( [ { name: 'a\uD800', probes: [ 0, 1, 2, 3 ] } ] ) ).toThrow( /zones\[0\]\.name has a lone surrogate/ );
+		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 4 ] }, { name: 'a', probes: [ 0, 1, 2, 4 ] } ] ) ).toThrow( /zones\[1\]\.name "a" is used by an earlier zone/ );
+		expect( make( [ { name: '', probes: [ 0, 1, 2, 4 ] }, { name: '', probes: [ 0, 1, 2, 4 ] } ] ) ).toThrow( /zones\[1\]\.name "" is used by an earlier zone/ );
+		expect( make( [ { name: 'a', probes: [] } ] ) ).toThrow( /zones\[0\] \("a"\)\.probes is empty; a zone needs at least one probe/ );
 		expect( make( [ { name: 'a' } ] ) ).toThrow( /zones\[0\] \("a"\)\.probes must be an array/ );
-		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 17 ] } ] ) ).toThrow( /zone "a" probes\[3\] is 17, not a probe index \(0\.\.16\)/ );
-		expect( make( [ { name: 'a', probes: [ 0, - 1, 2, 3 ] } ] ) ).toThrow( /probes\[1\] is -1/ );
-		expect( make( [ { name: 'a', probes: [ 0, 1.5, 2, 3 ] } ] ) ).toThrow( /probes\[1\] is 1\.5/ );
-		expect( make( [ { name: 'a', probes: [ 0, 1 ] } ] ) ).toThrow( /zone "a" cannot be interpolated \(2 probes\)/ );
-		expect( make( [ { name: 'a', probes: [ 0, 4, 8, 12 ] } ] ) ).toThrow( /zone "a" cannot be interpolated \(4 probes\)/ ); // all on one line
+		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 17 ] } ] ) ).toThrow( /zones\[0\] \("a"\)\.probes\[3\] = 17 is not a probe index \(0\.\.16\)/ );
+		expect( make( [ { name: 'a', probes: [ 0, - 1, 2, 3 ] } ] ) ).toThrow( /probes\[1\] = -1 is not a probe index/ );
+		expect( make( [ { name: 'a', probes: [ 0, 1.5, 2, 3 ] } ] ) ).toThrow( /probes\[1\] = 1\.5 is not a probe index/ );
 		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 4 ], bounds: { min: { x: 0, y: 0, z: NaN }, max: { x: 1, y: 1, z: 1 } } } ] ) ).toThrow( /zone "a" bounds\[0\] must be a box/ );
 		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 4 ], bounds: new THREE.Box3() } ] ) ).toThrow( /zone "a" bounds\[0\]/ ); // an empty Box3 (±Infinity)
 		expect( make( [ { name: 'a', probes: [ 0, 1, 2, 4 ], bounds: { min: { x: 2, y: 0, z: 0 }, max: { x: 1, y: 1, z: 1 } } } ] ) ).toThrow( /min > max/ );
