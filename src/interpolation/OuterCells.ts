@@ -1,5 +1,11 @@
+import { extentExponent, scaleInPlace, timesPowerOfTwo } from '../tetrahedra/powerOfTwo.js';
 import { hullAdjacency, hullBounds } from './hullSurface.js';
 import { FAR_LIMIT, outerCellNormals } from './outerCellNormals.js';
+
+// Hulls whose largest side is within 2^±LOCAL_RANGE keep their coordinates (no product of the
+// geometry below, up to four lengths, can over- or underflow); others work in a copy scaled by a
+// power of two to unit size.
+const LOCAL_RANGE = 100;
 
 // A point whose weights in a cell are all ≥ −OUTER_EPSILON belongs to it (rounding on shared quads).
 const OUTER_EPSILON = 1e-10;
@@ -25,16 +31,11 @@ const _cubic = new Float64Array( 4 );
  * tetrahedra's weights on the hull and across neighbouring cells, converging far away. The cells tile
  * the outside (normals are repaired where a sweep would fold); {@link OuterCells.locate} walks from
  * cell to cell, so a point costs a few cells. Built in O(hull faces). Pure math: no three.js. Used by
- * `TetrahedralMesh`; exposed for tests and tools. Construction, proofs and history: docs/outer-cells.md.
+ * `TetrahedralMesh`; exposed for tests and tools. Any scale: a hull far from unit size is handled in
+ * a copy of the positions scaled by 2^−exponent (docs/robustness.md). Construction, proofs and
+ * history: docs/outer-cells.md.
  */
 export class OuterCells {
-
-	/**
-	 * Probe positions, x, y, z per probe (shared with the mesh, not copied). An incremental
-	 * `TetrahedralMesh` points it at its new positions array after an edit that changed no hull
-	 * face (the hull vertices' coordinates are then the same).
-	 */
-	positions: Float64Array;
 
 	/** Hull triangles, 3 probe indices each, counter-clockwise seen from outside. */
 	readonly faces: Uint32Array;
@@ -56,15 +57,29 @@ export class OuterCells {
 	 * Per hull triangle, 12 numbers giving the cubic in τ = t / scale whose roots put a query q in
 	 * the plane of the moved triangle: c0 = V0·(q − a), c1 = V1·(q − a) + k1,
 	 * c2 = V2·(q − a) + k2, c3 = k3, stored as V0, V1, V2, k1, k2, k3 and scaled so that c0 is the
-	 * signed distance of q from the face's plane in units of `scale`.
+	 * signed distance of q from the face's plane in units of `scale`. In the local frame: q and a
+	 * are positions × 2^−exponent.
 	 */
 	readonly coefficients: Float64Array;
 
-	/** The hull's size (bounding-box diagonal of the hull vertices, i.e. of the probes): the unit of τ. */
+	/**
+	 * The local frame's power of two: its coordinates are the positions × 2^−exponent. 0 (the
+	 * positions themselves) unless the hull's size is beyond 2^±100.
+	 */
+	readonly exponent: number;
+
+	/** The hull's size (bounding-box diagonal of the hull vertices, i.e. of the probes) in the local frame: the unit of τ. */
 	readonly scale: number;
 
-	/** Centre of the probes' bounding box (where far queries are pulled towards). */
+	/** Centre of the probes' bounding box in the local frame (where far queries are pulled towards). */
 	readonly center: Float64Array;
+
+	// The positions (shared with the mesh), their local-frame copy (the same array when exponent is
+	// 0), and the factors between the frames.
+	private _positions: Float64Array;
+	private local: Float64Array;
+	private readonly toLocal: number;
+	private readonly toGiven: number;
 
 	/**
 	 * @param positions Probe positions (kept by reference).
@@ -75,20 +90,28 @@ export class OuterCells {
 	 */
 	constructor( positions: Float64Array, faces: Uint32Array, where = 'OuterCells' ) {
 
-		this.positions = positions;
 		this.faces = faces;
-		const faceCount = faces.length / 3, p = positions;
+		const faceCount = faces.length / 3;
 
 		// The bounding box of the hull's vertices is the probes' (extremes are hull vertices), and
 		// ignores positions that are in no face (probes removed from an incremental mesh).
-		const bounds = hullBounds( p, faces );
-		let minX = bounds[ 0 ], minY = bounds[ 1 ], minZ = bounds[ 2 ], maxX = bounds[ 3 ], maxY = bounds[ 4 ], maxZ = bounds[ 5 ];
-		if ( faces.length === 0 ) minX = minY = minZ = maxX = maxY = maxZ = 0;
+		const bounds = hullBounds( positions, faces );
+		if ( faces.length === 0 ) bounds.fill( 0 );
+		const k = extentExponent( bounds );
+		// Clamped so that each factor between the frames is one double.
+		const exponent = this.exponent = Math.abs( k ) <= LOCAL_RANGE ? 0 : Math.min( 1023, Math.max( - 1022, k ) );
+		this.toLocal = timesPowerOfTwo( 1, - exponent );
+		this.toGiven = timesPowerOfTwo( 1, exponent );
+		this._positions = this.local = positions;
+		this.positions = positions;
+		if ( exponent !== 0 ) scaleInPlace( bounds, 6, exponent );
+		const minX = bounds[ 0 ], minY = bounds[ 1 ], minZ = bounds[ 2 ], maxX = bounds[ 3 ], maxY = bounds[ 4 ], maxZ = bounds[ 5 ];
 		this.scale = Math.hypot( maxX - minX, maxY - minY, maxZ - minZ ) || 1;
 		this.center = Float64Array.of( ( minX + maxX ) / 2, ( minY + maxY ) / 2, ( minZ + maxZ ) / 2 );
+		const p = this.local;
 
 		const normals = this.normals = outerCellNormals( p, faces, this.scale );
-		this.adjacency = hullAdjacency( p, faces, where );
+		this.adjacency = hullAdjacency( positions, faces, where );
 
 		// Cubic coefficients. With E1 = b − a, E2 = c − a, F1 = nb − na, F2 = nc − na, G = −na and
 		// D = q − a, det[E1 + tF1, E2 + tF2, D + tG] expands to
@@ -130,6 +153,33 @@ export class OuterCells {
 
 	}
 
+	/**
+	 * Probe positions, x, y, z per probe (shared with the mesh, not copied). An incremental
+	 * `TetrahedralMesh` points it at its new positions array after an edit that changed no hull
+	 * face (the hull vertices' coordinates are then the same).
+	 */
+	get positions(): Float64Array {
+
+		return this._positions;
+
+	}
+
+	set positions( positions: Float64Array ) {
+
+		this._positions = positions;
+		if ( this.exponent === 0 ) {
+
+			this.local = positions;
+
+		} else {
+
+			this.local = positions.slice();
+			scaleInPlace( this.local, this.local.length, this.exponent );
+
+		}
+
+	}
+
 	/** Number of outer cells (= hull triangles). */
 	get count(): number {
 
@@ -143,16 +193,17 @@ export class OuterCells {
 	 */
 	signedDistance( f: number, x: number, y: number, z: number ): number {
 
-		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.positions;
-		return ( c[ k ] * ( x - p[ a ] ) + c[ k + 1 ] * ( y - p[ a + 1 ] ) + c[ k + 2 ] * ( z - p[ a + 2 ] ) ) * this.scale;
+		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.local, s = this.toLocal;
+		const distance = c[ k ] * ( x * s - p[ a ] ) + c[ k + 1 ] * ( y * s - p[ a + 1 ] ) + c[ k + 2 ] * ( z * s - p[ a + 2 ] );
+		return distance * this.scale * this.toGiven;
 
 	}
 
 	/** Whether (x, y, z) is strictly beyond the plane of hull triangle f (so outside the hull). */
 	isBeyond( f: number, x: number, y: number, z: number ): boolean {
 
-		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.positions;
-		return c[ k ] * ( x - p[ a ] ) + c[ k + 1 ] * ( y - p[ a + 1 ] ) + c[ k + 2 ] * ( z - p[ a + 2 ] ) > 0;
+		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.local, s = this.toLocal;
+		return c[ k ] * ( x * s - p[ a ] ) + c[ k + 1 ] * ( y * s - p[ a + 1 ] ) + c[ k + 2 ] * ( z * s - p[ a + 2 ] ) > 0;
 
 	}
 
@@ -166,7 +217,8 @@ export class OuterCells {
 	 */
 	solve( f: number, x: number, y: number, z: number, out: Float64Array | number[] ): boolean {
 
-		_query[ 0 ] = x; _query[ 1 ] = y; _query[ 2 ] = z;
+		const s = this.toLocal;
+		_query[ 0 ] = x * s; _query[ 1 ] = y * s; _query[ 2 ] = z * s;
 		return this.solveQuery( f, out );
 
 	}
@@ -177,15 +229,16 @@ export class OuterCells {
 	 */
 	weightsAt( f: number, t: number, x: number, y: number, z: number, out: Float64Array | number[] ): void {
 
-		_query[ 0 ] = x; _query[ 1 ] = y; _query[ 2 ] = z; _root[ 0 ] = t;
+		const s = this.toLocal;
+		_query[ 0 ] = x * s; _query[ 1 ] = y * s; _query[ 2 ] = z * s; _root[ 0 ] = t * s;
 		this.weightsAtRoot( f, out );
 
 	}
 
-	/** {@link OuterCells.solve} for the point in `_query`. */
+	/** {@link OuterCells.solve} for the point in `_query` (local frame). */
 	private solveQuery( f: number, out: Float64Array | number[] ): boolean {
 
-		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.positions;
+		const c = this.coefficients, k = 12 * f, a = 3 * this.faces[ 3 * f ], p = this.local;
 		const dx = _query[ 0 ] - p[ a ], dy = _query[ 1 ] - p[ a + 1 ], dz = _query[ 2 ] - p[ a + 2 ];
 		_cubic[ 0 ] = c[ k ] * dx + c[ k + 1 ] * dy + c[ k + 2 ] * dz;
 		_cubic[ 1 ] = c[ k + 3 ] * dx + c[ k + 4 ] * dy + c[ k + 5 ] * dz + c[ k + 9 ];
@@ -206,10 +259,10 @@ export class OuterCells {
 
 	}
 
-	/** Weights of the point in `_query` in triangle f moved to t = `_root[0]`. */
+	/** Weights of the point in `_query` in triangle f moved to t = `_root[0]` (local frame; out[0] = t in the positions' units). */
 	private weightsAtRoot( f: number, out: Float64Array | number[] ): void {
 
-		const faces = this.faces, p = this.positions, n = this.normals, t = _root[ 0 ];
+		const faces = this.faces, p = this.local, n = this.normals, t = _root[ 0 ];
 		const x = _query[ 0 ], y = _query[ 1 ], z = _query[ 2 ];
 		const a = 3 * faces[ 3 * f ], b = 3 * faces[ 3 * f + 1 ], c = 3 * faces[ 3 * f + 2 ];
 		// Relative to a(t), so large t loses nothing to the probes' absolute coordinates.
@@ -225,7 +278,7 @@ export class OuterCells {
 		let w = ( ( e1y * dz - e1z * dy ) * nx + ( e1z * dx - e1x * dz ) * ny + ( e1x * dy - e1y * dx ) * nz ) / nn;
 		// A moved triangle collapsed to a segment (rays crossing) has no weights; report it as outside.
 		if ( ! ( v - v === 0 && w - w === 0 ) ) { v = - 1; w = - 1; }
-		out[ 0 ] = t; out[ 1 ] = 1 - v - w; out[ 2 ] = v; out[ 3 ] = w;
+		out[ 0 ] = t * this.toGiven; out[ 1 ] = 1 - v - w; out[ 2 ] = v; out[ 3 ] = w;
 
 	}
 
@@ -241,13 +294,15 @@ export class OuterCells {
 	locate( x: number, y: number, z: number, start: number, out: Float64Array | number[] ): number {
 
 		// Far away the weights have reached their limit: pull the point in so the cubic stays finite.
-		const cx = this.center[ 0 ], cy = this.center[ 1 ], cz = this.center[ 2 ];
+		const cx = this.center[ 0 ], cy = this.center[ 1 ], cz = this.center[ 2 ], s = this.toLocal;
+		x *= s; y *= s; z *= s;
 		const rx = x - cx, ry = y - cy, rz = z - cz, limit = FAR_LIMIT * this.scale;
 		const r2 = rx * rx + ry * ry + rz * rz;
 		if ( r2 > limit * limit ) {
 
-			const s = limit / Math.sqrt( r2 );
-			x = cx + rx * s; y = cy + ry * s; z = cz + rz * s;
+			// hypot when r2 overflowed.
+			const pull = limit / ( r2 < Infinity ? Math.sqrt( r2 ) : Math.hypot( rx, ry, rz ) );
+			x = cx + rx * pull; y = cy + ry * pull; z = cz + rz * pull;
 
 		}
 

@@ -1,10 +1,16 @@
 import Delaunator from 'delaunator';
-import { assertPoints } from '../validate.js';
+import { boundsOf } from '../geometry/boundsOf.js';
+import { assertOptionalNumber, assertPoints } from '../validate.js';
 import { DegenerateInputError } from '../tetrahedra/tetrahedralize.js';
 import { mergeDuplicates } from '../tetrahedra/mergeDuplicates.js';
+import { extentExponent, scaleInPlace, timesPowerOfTwo } from '../tetrahedra/powerOfTwo.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 const INSIDE_EPSILON = 1e-12;
+
+// Layouts whose largest side is within 2^±LOCAL_RANGE keep their coordinates; others work in a copy
+// scaled by a power of two to unit size (squares and covariances neither over- nor underflow).
+const LOCAL_RANGE = 100;
 const _weights = new Float64Array( 3 );
 
 /**
@@ -14,14 +20,15 @@ const _weights = new Float64Array( 3 );
  * constant along the plane's normal; outside the triangulated region the weights are those of
  * the nearest point on its boundary.
  *
- * Output has 4 slots like {@link TetrahedralMesh}; the fourth weight is always 0.
+ * Output has 4 slots like {@link TetrahedralMesh}; the fourth weight is always 0. Any scale: a
+ * layout far from unit size is handled in a copy scaled by 2^−exponent (docs/robustness.md).
  */
 export class PlanarMesh implements ProbeInterpolator {
 
 	/** Probe positions, x, y, z per probe. */
 	readonly positions: Float64Array;
 
-	/** Probe positions in plane coordinates (u, v per probe). */
+	/** Probe positions in plane coordinates (u, v per probe), in the local frame. */
 	readonly planePositions: Float64Array;
 
 	/** Three probe indices per triangle, counter-clockwise in plane coordinates. */
@@ -33,8 +40,14 @@ export class PlanarMesh implements ProbeInterpolator {
 	/** Pairs (merged probe, probe it was merged into). */
 	readonly duplicates: Uint32Array;
 
-	/** A point of the plane (the probes' centroid). */
+	/** A point of the plane (the probes' centroid), in the local frame. */
 	readonly origin: Float64Array;
+
+	/**
+	 * The local frame's power of two: `origin` and `planePositions` are in units of 2^exponent. 0
+	 * (the positions' own units) unless the layout's size is beyond 2^±100.
+	 */
+	readonly exponent: number;
 
 	/** Unit normal of the best-fit plane, and the two unit axes spanning it: n, u, v (9 floats). */
 	readonly axes: Float64Array;
@@ -46,15 +59,24 @@ export class PlanarMesh implements ProbeInterpolator {
 	readonly weightCount = 4;
 
 	private readonly inverseMatrices: Float64Array;
+	private readonly toLocal: number;
 
 	/**
 	 * @param positions Flat x, y, z per probe; at least 3 probes not all on one line.
 	 * @param duplicateTolerance Merge distance as a fraction of the bounding-box diagonal.
+	 * @throws {RangeError} on NaN/Infinity, a length that is not a multiple of 3, or a tolerance
+	 *   that is not a finite number ≥ 0 ({@link TypeError} when it is not a number).
 	 */
 	constructor( positions: ArrayLike<number>, duplicateTolerance = 1e-9 ) {
 
-		assertPoints( 'PlanarMesh', 'positions', positions );
-		const p = this.positions = Float64Array.from( positions );
+		const n = assertPoints( 'PlanarMesh', 'positions', positions );
+		assertOptionalNumber( 'PlanarMesh', 'duplicateTolerance', duplicateTolerance, 0 );
+		this.positions = Float64Array.from( positions );
+		const k = extentExponent( boundsOf( this.positions, n ) );
+		this.exponent = Math.abs( k ) <= LOCAL_RANGE ? 0 : Math.min( 1023, Math.max( - 1022, k ) );
+		this.toLocal = timesPowerOfTwo( 1, - this.exponent );
+		const p = this.exponent === 0 ? this.positions : this.positions.slice();
+		scaleInPlace( p, p.length, this.exponent );
 		const { unique, duplicates } = mergeDuplicates( p, duplicateTolerance );
 		this.duplicates = duplicates;
 		if ( unique.length < 3 ) {
@@ -67,7 +89,6 @@ export class PlanarMesh implements ProbeInterpolator {
 		for ( const i of unique ) for ( let a = 0; a < 3; a ++ ) this.origin[ a ] += p[ 3 * i + a ] / unique.length;
 		this.axes = bestFitAxes( p, unique, this.origin );
 
-		const n = p.length / 3;
 		this.planePositions = new Float64Array( 2 * n );
 		for ( let i = 0; i < n; i ++ ) this.project( p[ 3 * i ], p[ 3 * i + 1 ], p[ 3 * i + 2 ], this.planePositions, 2 * i );
 
@@ -139,14 +160,14 @@ export class PlanarMesh implements ProbeInterpolator {
 	 */
 	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
 
-		const o = this.origin, ax = this.axes;
-		const dx = x - o[ 0 ], dy = y - o[ 1 ], dz = z - o[ 2 ];
+		const o = this.origin, ax = this.axes, s = this.toLocal;
+		const dx = x * s - o[ 0 ], dy = y * s - o[ 1 ], dz = z * s - o[ 2 ];
 		const u = dx * ax[ 3 ] + dy * ax[ 4 ] + dz * ax[ 5 ];
 		const v = dx * ax[ 6 ] + dy * ax[ 7 ] + dz * ax[ 8 ];
 
 		const count = this.triangles.length / 3;
 		let t = hint >= 0 && hint < count ? hint | 0 : 0;
-		let inside = false;
+		let inside = false, left = false;
 		for ( let steps = 0; steps <= count; steps ++ ) {
 
 			this.barycentric( t, u, v );
@@ -155,8 +176,22 @@ export class PlanarMesh implements ProbeInterpolator {
 			if ( _weights[ worst ] >= - INSIDE_EPSILON ) { inside = true; break; }
 			// The edge opposite vertex `worst` runs from vertex worst + 1 to worst + 2.
 			const next = this.neighbors[ 3 * t + ( worst + 1 ) % 3 ];
-			if ( next === - 1 ) break;
+			if ( next === - 1 ) { left = true; break; }
 			t = next;
+
+		}
+
+		// A walk past its step bound (rounding can make one cycle): a scan of every triangle decides.
+		if ( ! inside && ! left ) {
+
+			for ( t = 0; t < count && ! inside; t ++ ) {
+
+				this.barycentric( t, u, v );
+				inside = _weights[ 0 ] >= - INSIDE_EPSILON && _weights[ 1 ] >= - INSIDE_EPSILON && _weights[ 2 ] >= - INSIDE_EPSILON;
+
+			}
+
+			t --;
 
 		}
 

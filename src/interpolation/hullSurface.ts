@@ -1,5 +1,5 @@
 import { boundsOf } from '../geometry/boundsOf.js';
-import { orient } from '../tetrahedra/predicates.js';
+import { orientAnyScale } from '../tetrahedra/predicates.js';
 
 /**
  * The bounding box of the vertices of hull triangles `faces` (each vertex taken once per corner,
@@ -86,7 +86,7 @@ export function hullAdjacency( p: Float64Array, faces: Uint32Array, where: strin
 			let far = faces[ key ];
 			if ( far === u || far === v ) far = faces[ key + 1 ];
 			if ( far === u || far === v ) far = faces[ key + 2 ];
-			if ( orient( p, a, b, c, far ) > 0 ) {
+			if ( orientAnyScale( p, a, b, c, far ) > 0 ) {
 
 				throw new Error( `${where}: the hull is not convex at edge (${u}, ${v}): the tetrahedra do not fill the probes' convex hull.` );
 

@@ -1,5 +1,6 @@
 import { orient, inSphere, inSphereTieBreak, inCirclePerturbed } from './predicates.js';
 import { growInt32 } from './growArrays.js';
+import { scanForCell } from './scanForCell.js';
 
 /** The vertex at infinity of ghost tetrahedra. */
 export const INF = - 1;
@@ -206,7 +207,9 @@ export class DelaunayBuilder {
 
 	/**
 	 * Visibility walk to a cell whose closure contains q (finite) or a ghost whose hull face q is
-	 * strictly beyond. Stochastic face order rules out cycles (Devillers, Pion & Teillaud 2002).
+	 * strictly beyond. Stochastic face order rules out cycles (Devillers, Pion & Teillaud 2002), and
+	 * in a Delaunay tetrahedralization no walk visits a cell twice; past `used` steps (impossible with
+	 * exact predicates) a scan of every cell answers instead.
 	 */
 	locate( q: number ): number {
 
@@ -221,7 +224,7 @@ export class DelaunayBuilder {
 		}
 
 		let previous = - 1;
-		walk: for ( ;; ) {
+		walk: for ( let steps = this.used; steps >= 0; steps -- ) {
 
 			let r = random[ 0 ];
 			r ^= r << 13; r ^= r >>> 17; r ^= r << 5;
@@ -253,6 +256,8 @@ export class DelaunayBuilder {
 			return t;
 
 		}
+
+		return scanForCell( this.p, this.vertices, this.used, q );
 
 	}
 

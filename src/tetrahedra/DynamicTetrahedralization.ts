@@ -1,7 +1,8 @@
-import { assertInteger } from '../validate.js';
+import { assertCoordinates, assertInteger } from '../validate.js';
 import { DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
 import { DenseCells, type TetrahedralEdit } from './DenseCells.js';
-import { buildDelaunay, DegenerateInputError, insertAll, type TetrahedralizeOptions } from './tetrahedralize.js';
+import { PointStore } from './PointStore.js';
+import { buildDelaunay, DegenerateInputError, insertAll, readOptions, type TetrahedralizeOptions } from './tetrahedralize.js';
 import { VertexRemoval } from './VertexRemoval.js';
 
 export type { TetrahedralEdit } from './DenseCells.js';
@@ -30,7 +31,10 @@ const INSERT = `${CALLER}.insert`, REMOVE = `${CALLER}.remove`, MOVE = `${CALLER
  * for ( const t of mesh.lastEdit.changedCells ) recomputeInverseMatrix( t, mesh.tetrahedra );
  * ```
  *
- * Tolerances are fixed at construction, relative to the initial bounding-box diagonal. Algorithms
+ * Tolerances are fixed at construction, relative to the initial bounding-box diagonal. Any scale:
+ * the points are kept scaled by a power of two to about unit size (exactly); an edit far beyond it
+ * rebuilds in a new scale (`lastEdit.rebuilt`), and one float64 cannot hold beside the others throws
+ * a `DegenerateInputError` (`'unrepresentable'`), changing nothing (docs/robustness.md). Algorithms
  * (insertion, removal through the link's triangulation, dense numbering): docs/incremental-delaunay.md.
  */
 export class DynamicTetrahedralization {
@@ -41,13 +45,13 @@ export class DynamicTetrahedralization {
 	/** What the last edit (or the construction) changed. */
 	lastEdit: TetrahedralEdit;
 
+	// Points as given and in the local frame; `p` is `points.frame.local`, which the cells refer to.
+	private readonly points: PointStore;
 	private p: Float64Array;
 	private _pointCount: number;
 	private _activeCount = 0;
 	private active: Uint8Array;
 	private vertexCell: Int32Array;
-	private readonly tolerance2: number;
-	private readonly diagonal: number;
 	private readonly planarTolerance: number;
 	private readonly seed: number;
 
@@ -59,22 +63,26 @@ export class DynamicTetrahedralization {
 	 * @param positions Flat x, y, z per point; at least 4 distinct points not all in one plane.
 	 * @param options As for {@link tetrahedralize}; `duplicateTolerance` (relative to the initial
 	 *   bounding-box diagonal) also decides which later insertions and moves are rejected as duplicates.
-	 * @throws {RangeError} on NaN/Infinity or a length that is not a multiple of 3.
-	 * @throws {DegenerateInputError} for fewer than 4 distinct points, or points that are all coplanar.
+	 * @throws {RangeError} on NaN/Infinity, a length that is not a multiple of 3, or an option that
+	 *   is not a finite number ≥ 0 ({@link TypeError} when it is not a number).
+	 * @throws {DegenerateInputError} for fewer than 4 distinct points, points that are all coplanar,
+	 *   or a coordinate float64 cannot hold beside the others (`'unrepresentable'`).
 	 */
 	constructor( positions: ArrayLike<number>, options: TetrahedralizeOptions = {} ) {
 
-		const { builder, p, count, duplicates, diagonal } = buildDelaunay( CALLER, positions, options );
-		const { duplicateTolerance = 1e-9, planarTolerance = 1e-9, seed = 1 } = options;
+		const { builder, p, count, duplicates, diagonal, exponent } = buildDelaunay( CALLER, positions, options );
+		const { duplicateTolerance, planarTolerance, seed } = readOptions( CALLER, options );
 		this.duplicates = duplicates;
-		this.diagonal = diagonal;
-		this.tolerance2 = ( duplicateTolerance * diagonal ) ** 2;
 		this.planarTolerance = planarTolerance;
 		this.seed = seed;
 
 		const capacity = Math.max( 16, count * 2 );
-		this.p = new Float64Array( 3 * capacity );
-		this.p.set( p );
+		const raw = new Float64Array( 3 * capacity ), local = new Float64Array( 3 * capacity );
+		raw.set( positions );
+		local.set( p );
+		const tolerance = duplicateTolerance * diagonal;
+		this.points = new PointStore( raw, { local, exponent, tolerance, tolerance2: tolerance * tolerance, diagonal } );
+		this.p = local;
 		this._pointCount = count;
 		this.active = new Uint8Array( capacity ).fill( 1, 0, count );
 		for ( let i = 0; i < duplicates.length; i += 2 ) this.active[ duplicates[ i ] ] = 0;
@@ -108,7 +116,7 @@ export class DynamicTetrahedralization {
 	 */
 	get positions(): Float64Array {
 
-		return this.p.subarray( 0, 3 * this._pointCount );
+		return this.points.raw.subarray( 0, 3 * this._pointCount );
 
 	}
 
@@ -183,7 +191,8 @@ export class DynamicTetrahedralization {
 	 * Adds a point and returns its id (the next unused one).
 	 * @throws {RangeError} when a coordinate is not finite.
 	 * @throws {DegenerateInputError} (`reason: 'coincident'`) when the point is within the duplicate
-	 *   tolerance of an existing one; nothing changes then.
+	 *   tolerance of an existing one, `'unrepresentable'` when float64 cannot hold it beside the
+	 *   others; nothing changes then.
 	 */
 	insert( x: number, y: number, z: number ): number {
 
@@ -191,7 +200,14 @@ export class DynamicTetrahedralization {
 		assertCoordinates( where, x, y, z );
 		this.ensurePointCapacity( this._pointCount + 1 );
 		const q = this._pointCount;
-		this.setPoint( q, x, y, z );
+		if ( ! this.points.fits( x, y, z ) ) {
+
+			this.rebuildRescaled( where, q, x, y, z );
+			return q;
+
+		}
+
+		this.points.set( q, x, y, z );
 		this.checkDuplicate( where, q, - 1 );
 
 		this.cells.beginEdit();
@@ -221,17 +237,16 @@ export class DynamicTetrahedralization {
 	 * at the hole the removal left. When the removal alone would leave a degenerate set (4 points,
 	 * or the others coplanar) the mesh is rebuilt instead (`lastEdit.rebuilt`).
 	 * @throws {RangeError} when `index` is not an active point id or a coordinate is not finite.
-	 * @throws {DegenerateInputError} when the new position coincides with another point, or makes
-	 *   the set coplanar; nothing changes then.
+	 * @throws {DegenerateInputError} when the new position coincides with another point, makes the
+	 *   set coplanar, or is one float64 cannot hold beside the others; nothing changes then.
 	 */
 	move( index: number, x: number, y: number, z: number ): void {
 
 		const where = MOVE;
 		this.assertActive( where, index );
 		assertCoordinates( where, x, y, z );
-		const p = this.p, k = 3 * index;
-		const ox = p[ k ], oy = p[ k + 1 ], oz = p[ k + 2 ];
-		if ( ox === x && oy === y && oz === z ) {
+		const raw = this.points.raw, k = 3 * index;
+		if ( raw[ k ] === x && raw[ k + 1 ] === y && raw[ k + 2 ] === z ) {
 
 			this.cells.beginEdit();
 			this.lastEdit = this.cells.endEdit( false );
@@ -239,16 +254,30 @@ export class DynamicTetrahedralization {
 
 		}
 
+		if ( ! this.points.fits( x, y, z ) ) {
+
+			this.rebuildRescaled( where, index, x, y, z );
+			return;
+
+		}
+
+		const p = this.p, ox = p[ k ], oy = p[ k + 1 ], oz = p[ k + 2 ];
+
 		// Reject a duplicate before changing anything: the new position's nearest point is one of
 		// the vertices of its conflict region in the current mesh, unless that nearest point is
 		// `index` itself, which only matters when the move is shorter than the tolerance.
 		this.ensurePointCapacity( this._pointCount + 1 );
 		const scratch = this._pointCount;
-		this.setPoint( scratch, x, y, z );
+		this.points.set( scratch, x, y, z );
 		this.builder.last = this.vertexCell[ index ];
 		this.checkDuplicate( where, scratch, index );
-		const shortMove = ( x - ox ) ** 2 + ( y - oy ) ** 2 + ( z - oz ) ** 2 <= 4 * this.tolerance2;
-		if ( shortMove ) this.checkDuplicateBruteForce( where, x, y, z, index );
+		const lx = p[ 3 * scratch ], ly = p[ 3 * scratch + 1 ], lz = p[ 3 * scratch + 2 ];
+		if ( this.points.within( lx - ox, ly - oy, lz - oz, 2 ) ) {
+
+			const w = this.points.duplicateOf( scratch, index, this._pointCount, this.active );
+			if ( w >= 0 ) this.throwDuplicate( where, scratch, w );
+
+		}
 
 		// The removal checks everything before changing anything; when it would leave a degenerate
 		// set, the moved set may still be fine: rebuild it.
@@ -265,7 +294,7 @@ export class DynamicTetrahedralization {
 
 		}
 
-		this.setPoint( index, x, y, z );
+		this.points.set( index, x, y, z );
 		this.insertLocated( index, false );
 		this.lastEdit = this.cells.endEdit( false );
 
@@ -273,7 +302,7 @@ export class DynamicTetrahedralization {
 
 	// --- Insertion ---------------------------------------------------------------------------
 
-	/** Rejects point q (already written to `p`) when it is within tolerance of an active point other than `ignore`. */
+	/** Rejects point q (already written) when it is within tolerance of an active point other than `ignore`. */
 	private checkDuplicate( where: string, q: number, ignore: number ): void {
 
 		const builder = this.builder;
@@ -289,8 +318,7 @@ export class DynamicTetrahedralization {
 
 				const w = v[ 4 * t + i ];
 				if ( w === INF || w === ignore ) continue;
-				const d2 = ( p[ 3 * w ] - x ) ** 2 + ( p[ 3 * w + 1 ] - y ) ** 2 + ( p[ 3 * w + 2 ] - z ) ** 2;
-				if ( d2 <= this.tolerance2 ) this.throwDuplicate( where, x, y, z, w );
+				if ( this.points.within( p[ 3 * w ] - x, p[ 3 * w + 1 ] - y, p[ 3 * w + 2 ] - z, 1 ) ) this.throwDuplicate( where, q, w );
 
 			}
 
@@ -298,21 +326,11 @@ export class DynamicTetrahedralization {
 
 	}
 
-	private checkDuplicateBruteForce( where: string, x: number, y: number, z: number, ignore: number ): void {
+	/** Throws the duplicate error for point q coinciding with w; `given`: q's position when not in `positions` yet. */
+	private throwDuplicate( where: string, q: number, w: number, given?: number[] ): never {
 
-		const p = this.p;
-		for ( let w = 0; w < this._pointCount; w ++ ) {
-
-			if ( w === ignore || ! this.active[ w ] ) continue;
-			const d2 = ( p[ 3 * w ] - x ) ** 2 + ( p[ 3 * w + 1 ] - y ) ** 2 + ( p[ 3 * w + 2 ] - z ) ** 2;
-			if ( d2 <= this.tolerance2 ) this.throwDuplicate( where, x, y, z, w );
-
-		}
-
-	}
-
-	private throwDuplicate( where: string, x: number, y: number, z: number, w: number ): never {
-
+		const raw = this.points.raw;
+		const [ x, y, z ] = given ?? [ raw[ 3 * q ], raw[ 3 * q + 1 ], raw[ 3 * q + 2 ] ];
 		throw new DegenerateInputError( 'coincident', `${where}: ( ${x}, ${y}, ${z} ) coincides with point ${w} (within duplicateTolerance of the extent); move or remove that point instead.` );
 
 	}
@@ -375,25 +393,68 @@ export class DynamicTetrahedralization {
 	/** Moves `index` by rebuilding from scratch (for tiny or flat sets); nothing changes if that throws. */
 	private rebuildWithMove( where: string, index: number, x: number, y: number, z: number ): void {
 
-		const p = this.p, k = 3 * index;
-		const ox = p[ k ], oy = p[ k + 1 ], oz = p[ k + 2 ];
-		const ids = new Uint32Array( this._activeCount );
-		for ( let i = 0, j = 0; i < this._pointCount; i ++ ) if ( this.active[ i ] ) ids[ j ++ ] = i;
-		this.setPoint( index, x, y, z );
-		const builder = new DelaunayBuilder( p, this._pointCount, this.diagonal );
+		const raw = this.points.raw, k = 3 * index, p = this.p;
+		const ox = raw[ k ], oy = raw[ k + 1 ], oz = raw[ k + 2 ];
+		const ids = this.activeIds( index );
+		this.points.set( index, x, y, z );
+		const diagonal = this.points.frame.diagonal, builder = new DelaunayBuilder( p, this._pointCount, diagonal );
 		try {
 
-			insertAll( where, builder, p, ids, this.diagonal, this.planarTolerance, this.seed );
+			insertAll( where, builder, p, ids, diagonal, this.planarTolerance, this.seed );
 
 		} catch ( error ) {
 
-			this.setPoint( index, ox, oy, oz );
+			this.points.set( index, ox, oy, oz );
 			throw error;
 
 		}
 
 		this.builder = builder;
 		this.lastEdit = this.adopt( builder );
+
+	}
+
+	/**
+	 * Sets point `index` (active, or the next id for an insertion) to (x, y, z) by normalising the
+	 * points anew and rebuilding: for a position the current local frame cannot hold exactly.
+	 * Nothing changes if it throws (a duplicate, a flat set, a coordinate float64 cannot hold).
+	 */
+	private rebuildRescaled( where: string, index: number, x: number, y: number, z: number ): void {
+
+		const ids = this.activeIds( index );
+		const frame = this.points.renormalized( where, ids, index, x, y, z );
+		const w = this.points.duplicateOf( index, index, this._pointCount, this.active, frame );
+		if ( w >= 0 ) this.throwDuplicate( where, index, w, [ x, y, z ] );
+		const builder = new DelaunayBuilder( frame.local, this._pointCount + 1, frame.diagonal );
+		insertAll( where, builder, frame.local, ids, frame.diagonal, this.planarTolerance, this.seed );
+
+		// Commit.
+		this.points.frame = frame;
+		this.p = frame.local;
+		this.points.set( index, x, y, z );
+		this.removal.ensurePointCapacity( this.active.length, frame.local );
+		this.removal.setDiagonal( frame.diagonal );
+		if ( index === this._pointCount ) {
+
+			this._pointCount ++;
+			this._activeCount ++;
+			this.active[ index ] = 1;
+
+		}
+
+		this.lastEdit = this.adopt( builder );
+
+	}
+
+	/** The active point ids, and `extra` (an id to include, e.g. the next one; −1 for none). */
+	private activeIds( extra: number ): Uint32Array {
+
+		const add = extra >= 0 && ! this.isActive( extra ) ? 1 : 0;
+		const ids = new Uint32Array( this._activeCount + add );
+		let j = 0;
+		for ( let i = 0; i < this._pointCount; i ++ ) if ( this.active[ i ] ) ids[ j ++ ] = i;
+		if ( add ) ids[ j ] = extra;
+		return ids;
 
 	}
 
@@ -424,9 +485,8 @@ export class DynamicTetrahedralization {
 
 		if ( 3 * count <= this.p.length ) return;
 		const capacity = Math.max( 2 * count, 16 );
-		const p = new Float64Array( 3 * capacity );
-		p.set( this.p );
-		this.p = p;
+		this.points.grow( capacity, this._pointCount );
+		const p = this.p = this.points.frame.local;
 		this.builder.p = p;
 		const active = new Uint8Array( capacity );
 		active.set( this.active );
@@ -435,12 +495,6 @@ export class DynamicTetrahedralization {
 		cells.set( this.vertexCell );
 		this.vertexCell = cells;
 		this.removal.ensurePointCapacity( capacity, p );
-
-	}
-
-	private setPoint( i: number, x: number, y: number, z: number ): void {
-
-		this.p[ 3 * i ] = x; this.p[ 3 * i + 1 ] = y; this.p[ 3 * i + 2 ] = z;
 
 	}
 
@@ -454,13 +508,5 @@ export class DynamicTetrahedralization {
 		}
 
 	}
-
-}
-
-function assertCoordinates( where: string, x: number, y: number, z: number ): void {
-
-	if ( Number.isFinite( x ) && Number.isFinite( y ) && Number.isFinite( z ) ) return;
-	const [ name, value ] = ! Number.isFinite( x ) ? [ 'x', x ] : ! Number.isFinite( y ) ? [ 'y', y ] : [ 'z', z ];
-	throw new RangeError( `${where}: ${name} is ${String( value )}; coordinates must be finite numbers.` );
 
 }

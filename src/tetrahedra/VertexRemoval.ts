@@ -3,7 +3,7 @@ import { DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
 import type { DenseCells } from './DenseCells.js';
 import { FaceTable } from './FaceTable.js';
 import { growInt32, growUint32 } from './growArrays.js';
-import { findInitialTetrahedron } from './tetrahedralize.js';
+import { findInitialTetrahedron } from './initialTetrahedron.js';
 
 const CALLER = 'DynamicTetrahedralization';
 
@@ -16,7 +16,7 @@ const CALLER = 'DynamicTetrahedralization';
  */
 export class VertexRemoval {
 
-	private readonly diagonal: number;
+	private diagonal: number;
 	private readonly planarTolerance: number;
 	private readonly linkBuilder: DelaunayBuilder;
 	private readonly boundaryFaces = new FaceTable();
@@ -46,6 +46,14 @@ export class VertexRemoval {
 		this.planarTolerance = planarTolerance;
 		this.pointStamp = new Int32Array( pointCapacity );
 		this.linkBuilder = new DelaunayBuilder( p, 64, diagonal );
+
+	}
+
+	/** Sets the point set's extent (after the owner normalised its points anew). */
+	setDiagonal( diagonal: number ): void {
+
+		this.diagonal = diagonal;
+		this.linkBuilder.extent = diagonal;
 
 	}
 

@@ -2,12 +2,19 @@ import { boundsOf } from '../geometry/boundsOf.js';
 
 const _bounds = new Float64Array( 6 );
 
+// Below this squared radius, squared distances may underflow: compare distances (hypot) instead.
+const SQUARES_UNDERFLOW = 2 ** - 1000;
+
+// Finest hashed cell, relative to the diagonal: cell indices stay exact integers (below 2^53)
+// whatever the tolerance; a cell larger than the merge distance only costs comparisons.
+const FINEST_CELL = 2 ** - 40;
+
 /**
  * Finds points that coincide within `tolerance × diagonal` of the set's bounding box, with a
  * hashed uniform grid whose cell is the merge distance (so only the 27 surrounding cells can hold
  * a match). The first point of each group is kept.
  *
- * @param p Flat x, y, z coordinates.
+ * @param p Flat x, y, z coordinates, normalised (`normalizePoints`: squares neither over- nor underflow).
  * @param tolerance Merge distance as a fraction of the bounding-box diagonal.
  * @returns The kept point indices in input order, the merged pairs (merged, kept) flat, and the diagonal.
  */
@@ -26,7 +33,8 @@ export function mergeDuplicates( p: Float64Array, tolerance: number ): { unique:
 	const next = new Int32Array( n );
 	const keep = new Uint8Array( n );
 	const pairs: number[] = [];
-	const cell = radius > 0 ? radius : 1;
+	const cell = Math.max( radius, diagonal * FINEST_CELL ) || 1;
+	const squares = radius2 >= SQUARES_UNDERFLOW;
 
 	for ( let i = 0; i < n; i ++ ) {
 
@@ -39,7 +47,7 @@ export function mergeDuplicates( p: Float64Array, tolerance: number ): { unique:
 			for ( let j = head[ hashCell( cx + dx, cy + dy, cz + dz ) & mask ]; j !== - 1; j = next[ j ] ) {
 
 				const ex = p[ 3 * j ] - x, ey = p[ 3 * j + 1 ] - y, ez = p[ 3 * j + 2 ] - z;
-				if ( ex * ex + ey * ey + ez * ez <= radius2 ) { match = j; break search; }
+				if ( squares ? ex * ex + ey * ey + ez * ez <= radius2 : Math.hypot( ex, ey, ez ) <= radius ) { match = j; break search; }
 
 			}
 

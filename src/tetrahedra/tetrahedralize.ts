@@ -1,8 +1,13 @@
-import { assertPoints } from '../validate.js';
-import { orient } from './predicates.js';
+import { assertOptionalNumber, assertOptions, assertPoints } from '../validate.js';
+import { DegenerateInputError } from './DegenerateInputError.js';
 import { DelaunayBuilder } from './DelaunayBuilder.js';
+import { findInitialTetrahedron } from './initialTetrahedron.js';
 import { insertionOrder } from './spatialOrder.js';
 import { mergeDuplicates } from './mergeDuplicates.js';
+import { normalizePoints } from './normalizePoints.js';
+
+export { DegenerateInputError } from './DegenerateInputError.js';
+export type { DegenerateReason } from './DegenerateInputError.js';
 
 /** Options of {@link tetrahedralize}. */
 export interface TetrahedralizeOptions {
@@ -24,6 +29,15 @@ export interface TetrahedralizeOptions {
 
 }
 
+/** {@link TetrahedralizeOptions} with the defaults filled in, as checked by `readOptions`. */
+export interface CheckedTetrahedralizeOptions {
+
+	duplicateTolerance: number;
+	planarTolerance: number;
+	seed: number;
+
+}
+
 /** Result of {@link tetrahedralize}. */
 export interface Tetrahedralization {
 
@@ -38,43 +52,35 @@ export interface Tetrahedralization {
 
 }
 
-/** Why a point set cannot be tetrahedralized. */
-export type DegenerateReason = 'too-few-points' | 'coincident' | 'collinear' | 'coplanar';
-
-/**
- * Thrown by {@link tetrahedralize} when the points do not span a volume. Coplanar layouts (a
- * single floor of probes) can still be interpolated with a planar mesh; see `createProbeInterpolator`.
- */
-export class DegenerateInputError extends Error {
-
-	/** Which degeneracy was found. */
-	readonly reason: DegenerateReason;
-
-	constructor( reason: DegenerateReason, message: string ) {
-
-		super( message );
-		this.name = 'DegenerateInputError';
-		this.reason = reason;
-
-	}
-
-}
-
 /**
  * Builds the 3D Delaunay tetrahedralization of a point set.
  *
  * Bowyer–Watson insertion in a biased randomized Hilbert order, with ghost tetrahedra on the hull,
  * exact predicates and symbolic perturbation: regular grids (co-spherical everywhere), co-planar
  * subsets and clustered points all give a valid result — tetrahedra that exactly tile the convex
- * hull, none flat, none with an input point strictly inside its circumsphere.
+ * hull, none flat, none with an input point strictly inside its circumsphere. Any scale: the points
+ * are scaled by a power of two to unit size first (exact), so `points × 2^k` gives the same
+ * tetrahedra as `points` (docs/robustness.md).
  *
  * @param points Flat x, y, z coordinates.
- * @throws {RangeError} on NaN/Infinity or a length that is not a multiple of 3.
- * @throws {DegenerateInputError} for fewer than 4 distinct points, or points that are all coplanar.
+ * @throws {RangeError} on NaN/Infinity, a length that is not a multiple of 3, or an option that is
+ *   not a finite number ≥ 0 ({@link TypeError} when it is not a number).
+ * @throws {DegenerateInputError} for fewer than 4 distinct points, points that are all coplanar, or
+ *   a coordinate float64 cannot hold beside the layout's extent (`'unrepresentable'`).
  */
 export function tetrahedralize( points: ArrayLike<number>, options: TetrahedralizeOptions = {} ): Tetrahedralization {
 
-	const { builder, duplicates } = buildDelaunay( 'tetrahedralize', points, options );
+	return tetrahedralizeFor( 'tetrahedralize', points, options );
+
+}
+
+/**
+ * {@link tetrahedralize} with `caller` starting its error messages (for the meshes built on it).
+ * @internal
+ */
+export function tetrahedralizeFor( caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions = {} ): Tetrahedralization {
+
+	const { builder, duplicates } = buildDelaunay( caller, points, options );
 	const result = { ...finiteCells( builder ), duplicates };
 	builder.retire();
 	return result;
@@ -82,16 +88,35 @@ export function tetrahedralize( points: ArrayLike<number>, options: Tetrahedrali
 }
 
 /**
- * The shared first half of `tetrahedralize` and `DynamicTetrahedralization`: validates the points,
- * merges duplicates, rejects degenerate sets and inserts every kept point (BRIO + Hilbert order).
- * @param caller Function name for error messages.
+ * Checks the options of {@link tetrahedralize} (an object or undefined; each number finite and
+ * ≥ 0) and fills in the defaults.
  * @internal
  */
-export function buildDelaunay(
-	caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions,
-): { builder: DelaunayBuilder; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number } {
+export function readOptions( caller: string, options: TetrahedralizeOptions | undefined ): CheckedTetrahedralizeOptions {
+
+	assertOptions( caller, 'options', options );
+	const { duplicateTolerance = 1e-9, planarTolerance = 1e-9, seed = 1 } = options ?? {};
+	assertOptionalNumber( caller, 'options.duplicateTolerance', duplicateTolerance, 0 );
+	assertOptionalNumber( caller, 'options.planarTolerance', planarTolerance, 0 );
+	assertOptionalNumber( caller, 'options.seed', seed );
+	return { duplicateTolerance, planarTolerance, seed };
+
+}
+
+/**
+ * The shared first half of `tetrahedralize` and `DynamicTetrahedralization`: validates the points
+ * and options, copies the points scaled by 2^−exponent to unit size (`normalizePoints`), merges
+ * duplicates, rejects degenerate sets and inserts every kept point (BRIO + Hilbert order).
+ * @param caller Function name for error messages.
+ * @returns The builder over `p` (the normalised copy), and the normalised diagonal.
+ * @internal
+ */
+export function buildDelaunay( caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions | undefined ): {
+	builder: DelaunayBuilder; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number; exponent: number;
+} {
 
 	const count = assertPoints( caller, 'points', points );
+	const { duplicateTolerance, planarTolerance, seed } = readOptions( caller, options );
 	if ( count < 4 ) {
 
 		throw new DegenerateInputError( 'too-few-points', `${caller}: points needs at least 4 points to span a volume, got ${count}.` );
@@ -99,7 +124,7 @@ export function buildDelaunay(
 	}
 
 	const p = Float64Array.from( points );
-	const { duplicateTolerance = 1e-9, planarTolerance = 1e-9, seed = 1 } = options;
+	const exponent = normalizePoints( caller, 'points', p, count );
 
 	const { unique, duplicates, diagonal } = mergeDuplicates( p, duplicateTolerance );
 	if ( unique.length < 4 ) {
@@ -110,7 +135,7 @@ export function buildDelaunay(
 
 	const builder = new DelaunayBuilder( p, count, diagonal );
 	insertAll( caller, builder, p, unique, diagonal, planarTolerance, seed );
-	return { builder, p, count, duplicates, diagonal };
+	return { builder, p, count, duplicates, diagonal, exponent };
 
 }
 
@@ -138,74 +163,6 @@ export function insertAll(
 
 	const order = insertionOrder( p, rest, seed );
 	for ( let i = 0; i < order.length; i ++ ) builder.insert( order[ i ] );
-
-}
-
-/**
- * Four affinely independent points, far apart: the first of the extreme points in x, then the
- * farthest from it, from their line, from their plane. Tolerances make near-degenerate sets fail
- * loudly here instead of producing a mesh of slivers.
- */
-export function findInitialTetrahedron(
-	caller: string, p: Float64Array, unique: Uint32Array, diagonal: number, planarTolerance: number,
-): [ number, number, number, number ] {
-
-	let i0 = unique[ 0 ];
-	for ( let i = 1; i < unique.length; i ++ ) if ( p[ 3 * unique[ i ] ] < p[ 3 * i0 ] ) i0 = unique[ i ];
-	const ax = p[ 3 * i0 ], ay = p[ 3 * i0 + 1 ], az = p[ 3 * i0 + 2 ];
-
-	let i1 = - 1, best = - 1;
-	for ( let i = 0; i < unique.length; i ++ ) {
-
-		const v = unique[ i ];
-		const dx = p[ 3 * v ] - ax, dy = p[ 3 * v + 1 ] - ay, dz = p[ 3 * v + 2 ] - az;
-		const d = dx * dx + dy * dy + dz * dz;
-		if ( d > best ) { best = d; i1 = v; }
-
-	}
-
-	const ux = p[ 3 * i1 ] - ax, uy = p[ 3 * i1 + 1 ] - ay, uz = p[ 3 * i1 + 2 ] - az;
-	let i2 = - 1;
-	best = - 1;
-	for ( let i = 0; i < unique.length; i ++ ) {
-
-		const v = unique[ i ];
-		const dx = p[ 3 * v ] - ax, dy = p[ 3 * v + 1 ] - ay, dz = p[ 3 * v + 2 ] - az;
-		const cx = uy * dz - uz * dy, cy = uz * dx - ux * dz, cz = ux * dy - uy * dx;
-		const d = cx * cx + cy * cy + cz * cz; // |u × d|² = |u|² · distance² to the line
-		if ( d > best ) { best = d; i2 = v; }
-
-	}
-
-	const lineDistance = Math.sqrt( best / ( ux * ux + uy * uy + uz * uz ) );
-	if ( lineDistance <= planarTolerance * diagonal ) {
-
-		throw new DegenerateInputError( 'collinear', `${caller}: all ${unique.length} distinct points lie on one line (within ${planarTolerance} of the extent); they span no area or volume.` );
-
-	}
-
-	const vx = p[ 3 * i2 ] - ax, vy = p[ 3 * i2 + 1 ] - ay, vz = p[ 3 * i2 + 2 ] - az;
-	let nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-	const nl = Math.hypot( nx, ny, nz );
-	nx /= nl; ny /= nl; nz /= nl;
-
-	let i3 = - 1;
-	best = - 1;
-	for ( let i = 0; i < unique.length; i ++ ) {
-
-		const v = unique[ i ];
-		const d = Math.abs( ( p[ 3 * v ] - ax ) * nx + ( p[ 3 * v + 1 ] - ay ) * ny + ( p[ 3 * v + 2 ] - az ) * nz );
-		if ( d > best ) { best = d; i3 = v; }
-
-	}
-
-	if ( best <= planarTolerance * diagonal || orient( p, i0, i1, i2, i3 ) === 0 ) {
-
-		throw new DegenerateInputError( 'coplanar', `${caller}: all ${unique.length} distinct points lie in one plane (within ${planarTolerance} of the extent); a volume needs at least one point off that plane. Use createProbeInterpolator for planar layouts.` );
-
-	}
-
-	return orient( p, i0, i1, i2, i3 ) > 0 ? [ i0, i1, i2, i3 ] : [ i0, i2, i1, i3 ];
 
 }
 

@@ -1,4 +1,4 @@
-import { orient } from './predicates.js';
+import { orientAnyScale } from './predicates.js';
 
 /*
  * The one check of a stored tetrahedralization (baked files, TetrahedralMesh.fromTetrahedralization):
@@ -55,7 +55,7 @@ function fail( code: TetrahedralizationErrorCode, where: string, message: string
 /**
  * Checks tetrahedra and neighbour links against the positions: indices in range (also for plain
  * numbers, before the typed conversion where −1.5 or 2^32 would wrap), every tetrahedron
- * positively oriented (exact predicate on the float64 positions), every link t →(i) n answered by
+ * positively oriented (exact predicate on the float64 positions, at any scale), every link t →(i) n answered by
  * n → t across the same three vertices, with the two apexes on opposite sides of the shared face,
  * no hull face shared. The lengths are the caller's to check (a multiple of 4, equal).
  * @param where Function name the messages start with.
@@ -73,7 +73,7 @@ export function validateTetrahedralization(
 	for ( let t = 0; t < tetCount; t ++ ) {
 
 		const t4 = 4 * t;
-		if ( ! ( orient( positions, tets[ t4 ], tets[ t4 + 1 ], tets[ t4 + 2 ], tets[ t4 + 3 ] ) > 0 ) ) {
+		if ( ! ( orientAnyScale( positions, tets[ t4 ], tets[ t4 + 1 ], tets[ t4 + 2 ], tets[ t4 + 3 ] ) > 0 ) ) {
 
 			fail( 'orientation', where, `tetrahedron ${t} (probes ${tets[ t4 ]}, ${tets[ t4 + 1 ]}, ${tets[ t4 + 2 ]}, ${tets[ t4 + 3 ]}) is not positively oriented (flat or inverted).` );
 

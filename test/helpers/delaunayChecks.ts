@@ -3,14 +3,177 @@ import { orient3d, insphere } from 'robust-predicates';
 /*
  * Independent, brute-force checks of a tetrahedralization, written against robust-predicates
  * directly (not the library's predicate wrappers) so a sign slip in the library cannot hide here.
+ *
+ * Any scale: the checks run on a copy of the points scaled by a power of two to unit size (exact;
+ * every sign is the same as on the input), and where robust-predicates could under- or overflow
+ * (a coordinate below 2^−150 of the extent, but not 0) the signs come from BigInt arithmetic of
+ * this file's own. Volumes are summed on the copy and reported in the input's units.
  */
 
-/** Exact sign of det[b − a, c − a, d − a] (robust-predicates' orient3d has the opposite sign). */
-function volumeSign( p: Float64Array, a: number, b: number, c: number, d: number ): number {
+// robust-predicates is exact when every coordinate is 0 or of magnitude in [LOW, HIGH] (no
+// product of up to five factors under- or overflows).
+const LOW = 2 ** - 150, HIGH = 2 ** 180;
 
-	return - Math.sign( orient3d(
-		p[ 3 * a ], p[ 3 * a + 1 ], p[ 3 * a + 2 ], p[ 3 * b ], p[ 3 * b + 1 ], p[ 3 * b + 2 ],
-		p[ 3 * c ], p[ 3 * c + 1 ], p[ 3 * c + 2 ], p[ 3 * d ], p[ 3 * d + 1 ], p[ 3 * d + 2 ] ) );
+/** The exponent k with 2^k ≤ v < 2^(k+1), for a finite v > 0 (by search, not by bit tricks: independent of the library). */
+function floorLog2( v: number ): number {
+
+	let k = Math.floor( Math.log2( v ) );
+	while ( pow2( k ) > v ) k --;
+	while ( pow2( k + 1 ) <= v ) k ++;
+	return k;
+
+}
+
+/** 2^k as a product of two doubles (x · 2^k exact when the result is representable). */
+function times2( x: number, k: number ): number {
+
+	const half = Math.trunc( k / 2 );
+	return x * pow2( half ) * pow2( k - half );
+
+}
+
+function pow2( k: number ): number {
+
+	return k >= - 1074 ? 2 ** k : 0;
+
+}
+
+/**
+ * The points scaled by 2^−k, k from the largest side of their bounding box (into [1, 2)), and k.
+ * @throws Error when a coordinate does not scale exactly (the check would then not be exact).
+ */
+export function normalizedCopy( p: Float64Array ): { points: Float64Array; exponent: number } {
+
+	let side = 0;
+	for ( let a = 0; a < 3; a ++ ) {
+
+		let min = Infinity, max = - Infinity;
+		for ( let i = a; i < p.length; i += 3 ) { min = Math.min( min, p[ i ] ); max = Math.max( max, p[ i ] ); }
+		side = Math.max( side, max / 2 - min / 2 );
+
+	}
+
+	const exponent = side > 0 ? floorLog2( side ) + 1 : 0;
+	const points = new Float64Array( p.length );
+	for ( let i = 0; i < p.length; i ++ ) {
+
+		points[ i ] = times2( p[ i ], - exponent );
+		if ( times2( points[ i ], exponent ) !== p[ i ] ) throw new Error( `checkDelaunay: coordinate ${i} (${p[ i ]}) does not scale exactly by 2^${- exponent}.` );
+
+	}
+
+	return { points, exponent };
+
+}
+
+function inWindow( values: number[] ): boolean {
+
+	for ( const v of values ) {
+
+		const a = Math.abs( v );
+		if ( a > HIGH || ( a < LOW && a !== 0 ) ) return false;
+
+	}
+
+	return true;
+
+}
+
+/** Exact integers m · 2^(q − lowest) for doubles (a double is an integer times a power of two). */
+function bigIntegers( values: number[] ): bigint[] {
+
+	const parts = values.map( ( v ) => {
+
+		if ( v === 0 ) return { m: 0n, q: 0 };
+		let q = floorLog2( Math.abs( v ) ) - 52;
+		if ( q < - 1074 ) q = - 1074;
+		return { m: BigInt( times2( v, - q ) ), q };
+
+	} );
+	const lowest = Math.min( ...parts.filter( ( x ) => x.m !== 0n ).map( ( x ) => x.q ) );
+	return parts.map( ( x ) => x.m === 0n ? 0n : x.m << BigInt( x.q - lowest ) );
+
+}
+
+function coordinates( p: Float64Array, ids: number[] ): number[] {
+
+	return ids.flatMap( ( i ) => [ p[ 3 * i ], p[ 3 * i + 1 ], p[ 3 * i + 2 ] ] );
+
+}
+
+/**
+ * Exact sign of det[b − a, c − a, d − a] (robust-predicates' orient3d has the opposite sign);
+ * `allInWindow`: every coordinate of p is in robust-predicates' window (no BigInt needed).
+ */
+function volumeSign( p: Float64Array, allInWindow: boolean, a: number, b: number, c: number, d: number ): number {
+
+	if ( allInWindow ) {
+
+		return - Math.sign( orient3d(
+			p[ 3 * a ], p[ 3 * a + 1 ], p[ 3 * a + 2 ], p[ 3 * b ], p[ 3 * b + 1 ], p[ 3 * b + 2 ],
+			p[ 3 * c ], p[ 3 * c + 1 ], p[ 3 * c + 2 ], p[ 3 * d ], p[ 3 * d + 1 ], p[ 3 * d + 2 ] ) );
+
+	}
+
+	const v = coordinates( p, [ a, b, c, d ] );
+	if ( inWindow( v ) ) {
+
+		const [ ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz ] = v;
+		return - Math.sign( orient3d( ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz ) );
+
+	}
+
+	const [ ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz ] = bigIntegers( v );
+	const ux = bx - ax, uy = by - ay, uz = bz - az, vx = cx - ax, vy = cy - ay, vz = cz - az, wx = dx - ax, wy = dy - ay, wz = dz - az;
+	const det = ux * ( vy * wz - vz * wy ) - uy * ( vx * wz - vz * wx ) + uz * ( vx * wy - vy * wx );
+	return det > 0n ? 1 : det < 0n ? - 1 : 0;
+
+}
+
+/** Exact: > 0 when e is strictly inside the circumsphere of the positive tetrahedron abcd. */
+function inSphereSign( p: Float64Array, allInWindow: boolean, a: number, b: number, c: number, d: number, e: number ): number {
+
+	// robust-predicates: > 0 inside for a tetrahedron with det[b−a, c−a, d−a] > 0.
+	if ( allInWindow ) {
+
+		return Math.sign( insphere(
+			p[ 3 * a ], p[ 3 * a + 1 ], p[ 3 * a + 2 ], p[ 3 * b ], p[ 3 * b + 1 ], p[ 3 * b + 2 ],
+			p[ 3 * c ], p[ 3 * c + 1 ], p[ 3 * c + 2 ], p[ 3 * d ], p[ 3 * d + 1 ], p[ 3 * d + 2 ],
+			p[ 3 * e ], p[ 3 * e + 1 ], p[ 3 * e + 2 ] ) );
+
+	}
+
+	const v = coordinates( p, [ a, b, c, d, e ] );
+	if ( inWindow( v ) ) {
+
+		const [ ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez ] = v;
+		return Math.sign( insphere( ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez ) );
+
+	}
+
+	// The 4×4 determinant of the rows (x − ex, y − ey, z − ez, |· − e|²) of a, b, c, d, expanded by
+	// its last column; its sign is − (inside) for a positive tetrahedron, so the result is negated.
+	const w = bigIntegers( v );
+	const rows: bigint[][] = [];
+	for ( let r = 0; r < 4; r ++ ) {
+
+		const x = w[ 3 * r ] - w[ 12 ], y = w[ 3 * r + 1 ] - w[ 13 ], z = w[ 3 * r + 2 ] - w[ 14 ];
+		rows.push( [ x, y, z, x * x + y * y + z * z ] );
+
+	}
+
+	const det3 = ( [ r0, r1, r2 ]: bigint[][] ) => r0[ 0 ] * ( r1[ 1 ] * r2[ 2 ] - r1[ 2 ] * r2[ 1 ] )
+		- r0[ 1 ] * ( r1[ 0 ] * r2[ 2 ] - r1[ 2 ] * r2[ 0 ] ) + r0[ 2 ] * ( r1[ 0 ] * r2[ 1 ] - r1[ 1 ] * r2[ 0 ] );
+	let det = 0n;
+	for ( let r = 0; r < 4; r ++ ) {
+
+		const minor = rows.filter( ( _, i ) => i !== r ).map( ( row ) => row.slice( 0, 3 ) );
+		const term = rows[ r ][ 3 ] * det3( minor );
+		det += ( r + 3 ) % 2 === 0 ? term : - term;
+
+	}
+
+	return det > 0n ? - 1 : det < 0n ? 1 : 0;
 
 }
 
@@ -33,29 +196,38 @@ export interface DelaunayReport {
 	unusedPoints: number;
 	hullViolations: number;
 	emptySphereViolations: number;
+	/** Sum of the tetrahedra's volumes, in the input's units (may overflow or underflow at extreme scales). */
 	volumeSum: number;
+	/** Volume enclosed by the hull faces, in the input's units (likewise). */
 	hullVolume: number;
+	/** |volumeSum − hullVolume| / hullVolume, computed at unit scale (meaningful at any scale). */
+	tilingError: number;
 
 }
 
 /**
  * Runs every check; `skip` holds point indices that were merged as duplicates (not vertices).
  */
-export function checkDelaunay( p: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array, skip: Set<number> = new Set() ): DelaunayReport {
+export function checkDelaunay(
+	input: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array, skip: Set<number> = new Set(),
+): DelaunayReport {
 
+	const { points: p, exponent } = normalizedCopy( input );
+	const safe = inWindow( Array.from( p ) );
 	const n = p.length / 3, count = tetrahedra.length / 4;
 	const report: DelaunayReport = {
 		tetrahedra: count, nonPositive: 0, asymmetricNeighbors: 0, mismatchedFaces: 0, unusedPoints: 0,
-		hullViolations: 0, emptySphereViolations: 0, volumeSum: 0, hullVolume: 0,
+		hullViolations: 0, emptySphereViolations: 0, volumeSum: 0, hullVolume: 0, tilingError: 0,
 	};
 
+	let volumeSum = 0, hullVolume = 0;
 	const used = new Uint8Array( n );
 	for ( let t = 0; t < count; t ++ ) {
 
 		const [ a, b, c, d ] = tetrahedra.subarray( 4 * t, 4 * t + 4 );
 		used[ a ] = used[ b ] = used[ c ] = used[ d ] = 1;
-		if ( volumeSign( p, a, b, c, d ) <= 0 ) report.nonPositive ++;
-		report.volumeSum += volume( p, a, b, c, d );
+		if ( volumeSign( p, safe, a, b, c, d ) <= 0 ) report.nonPositive ++;
+		volumeSum += volume( p, a, b, c, d );
 
 		for ( let i = 0; i < 4; i ++ ) {
 
@@ -88,20 +260,23 @@ export function checkDelaunay( p: Float64Array, tetrahedra: Uint32Array, neighbo
 
 				if ( skip.has( q ) ) continue;
 				const w = v.slice(); w[ i ] = q;
-				if ( volumeSign( p, w[ 0 ], w[ 1 ], w[ 2 ], w[ 3 ] ) < 0 ) { report.hullViolations ++; break; }
+				if ( volumeSign( p, safe, w[ 0 ], w[ 1 ], w[ 2 ], w[ 3 ] ) < 0 ) { report.hullViolations ++; break; }
 
 			}
 
 			// The cell with its inner vertex moved to the apex: the signed volume of the cone from the
 			// apex over this face, positive when the apex is on the inner side. Summed over a closed
 			// outward surface, these give the enclosed volume wherever the apex is.
-			report.hullVolume += coneVolume( p, v, i, centroid );
+			hullVolume += coneVolume( p, v, i, centroid );
 
 		}
 
 	}
 
-	report.emptySphereViolations = countEmptySphereViolations( p, tetrahedra, skip );
+	report.volumeSum = times2( volumeSum, 3 * exponent );
+	report.hullVolume = times2( hullVolume, 3 * exponent );
+	report.tilingError = Math.abs( volumeSum - hullVolume ) / hullVolume;
+	report.emptySphereViolations = countEmptySphereViolations( p, safe, tetrahedra, skip );
 	return report;
 
 }
@@ -132,7 +307,7 @@ function coneVolume( p: Float64Array, v: number[], i: number, apex: number[] ): 
  * Counts tetrahedra with an input point strictly inside their circumsphere (exact insphere), with a
  * uniform grid over the points to find the candidates inside each sphere's bounding box.
  */
-function countEmptySphereViolations( p: Float64Array, tetrahedra: Uint32Array, skip: Set<number> ): number {
+function countEmptySphereViolations( p: Float64Array, safe: boolean, tetrahedra: Uint32Array, skip: Set<number> ): number {
 
 	const n = p.length / 3;
 	let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
@@ -151,7 +326,8 @@ function countEmptySphereViolations( p: Float64Array, tetrahedra: Uint32Array, s
 	for ( let i = 0; i < n; i ++ ) {
 
 		if ( skip.has( i ) ) continue;
-		bucket[ cell( p[ 3 * i ], minX, sx ) + cells * ( cell( p[ 3 * i + 1 ], minY, sy ) + cells * cell( p[ 3 * i + 2 ], minZ, sz ) ) ].push( i );
+		const k = cell( p[ 3 * i ], minX, sx ) + cells * ( cell( p[ 3 * i + 1 ], minY, sy ) + cells * cell( p[ 3 * i + 2 ], minZ, sz ) );
+		bucket[ k ].push( i );
 
 	}
 
@@ -160,22 +336,25 @@ function countEmptySphereViolations( p: Float64Array, tetrahedra: Uint32Array, s
 
 		const [ a, b, c, d ] = tetrahedra.subarray( 4 * t, 4 * t + 4 );
 		const [ cx, cy, cz, r ] = circumsphere( p, a, b, c, d );
+		// A sphere too flat to locate in floating point (an invalid cell) is checked against every point.
+		const everywhere = ! Number.isFinite( cx + cy + cz + r );
 		const pad = r * ( 1 + 1e-6 ) + 1e-12;
-		for ( let k = cell( cz - pad, minZ, sz ); k <= cell( cz + pad, minZ, sz ); k ++ ) {
+		const range = ( v: number, min: number, s: number, lo: boolean ) => {
 
-			for ( let j = cell( cy - pad, minY, sy ); j <= cell( cy + pad, minY, sy ); j ++ ) {
+			return everywhere ? ( lo ? 0 : cells - 1 ) : cell( v + ( lo ? - pad : pad ), min, s );
 
-				for ( let i = cell( cx - pad, minX, sx ); i <= cell( cx + pad, minX, sx ); i ++ ) {
+		};
+
+		for ( let k = range( cz, minZ, sz, true ); k <= range( cz, minZ, sz, false ); k ++ ) {
+
+			for ( let j = range( cy, minY, sy, true ); j <= range( cy, minY, sy, false ); j ++ ) {
+
+				for ( let i = range( cx, minX, sx, true ); i <= range( cx, minX, sx, false ); i ++ ) {
 
 					for ( const q of bucket[ i + cells * ( j + cells * k ) ] ) {
 
 						if ( q === a || q === b || q === c || q === d ) continue;
-						const s = insphere(
-							p[ 3 * a ], p[ 3 * a + 1 ], p[ 3 * a + 2 ], p[ 3 * b ], p[ 3 * b + 1 ], p[ 3 * b + 2 ],
-							p[ 3 * c ], p[ 3 * c + 1 ], p[ 3 * c + 2 ], p[ 3 * d ], p[ 3 * d + 1 ], p[ 3 * d + 2 ],
-							p[ 3 * q ], p[ 3 * q + 1 ], p[ 3 * q + 2 ] );
-						// robust-predicates: > 0 inside for a tetrahedron with det[b−a, c−a, d−a] > 0.
-						if ( s > 0 ) violations ++;
+						if ( inSphereSign( p, safe, a, b, c, d, q ) > 0 ) violations ++;
 
 					}
 
