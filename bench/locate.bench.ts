@@ -69,7 +69,7 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 
 				if ( ! Grid ) {
 
-					row.status = 'not available: src/index.ts does not export GridInterpolator';
+					row.status = 'not available: src/math.ts does not export GridInterpolator';
 					continue;
 
 				}

@@ -34,7 +34,7 @@ export interface OurApi {
 export interface Loaded {
 	/** Whatever the module exports (parts of the API may not be written yet). */
 	api: Partial<OurApi>;
-	/** `'src/index.ts'`, or the BENCH_OURS override. */
+	/** `'src/index.ts + src/math.ts'`, or the BENCH_OURS override. */
 	source: string;
 	/** Why the module could not be loaded at all. */
 	error?: string;
@@ -61,11 +61,15 @@ export function whyMissing( loaded: Loaded, names: ( keyof OurApi )[] ): string 
 async function load(): Promise<Loaded> {
 
 	const override = process.env.BENCH_OURS;
-	const url = override ? pathToFileURL( resolve( override ) ).href : new URL( '../src/index.js', import.meta.url ).href;
-	const source = override ? `BENCH_OURS=${override}` : 'src/index.ts';
+	// The package's main entry and its pure /math entry (the interpolators and tetrahedralize live there).
+	const urls = override
+		? [ pathToFileURL( resolve( override ) ).href ]
+		: [ new URL( '../src/index.js', import.meta.url ).href, new URL( '../src/math.js', import.meta.url ).href ];
+	const source = override ? `BENCH_OURS=${override}` : 'src/index.ts + src/math.ts';
 	try {
 
-		return { api: await import( url ) as Partial<OurApi>, source };
+		const modules = await Promise.all( urls.map( ( url ) => import( url ) ) );
+		return { api: Object.assign( {}, ...modules ) as Partial<OurApi>, source };
 
 	} catch ( error ) {
 
