@@ -53,6 +53,7 @@ export function normalizedCopy( p: Float64Array ): { points: Float64Array; expon
 
 	}
 
+	if ( ! Number.isFinite( side ) ) throw new Error( 'checkDelaunay: the points are not all finite.' );
 	const exponent = side > 0 ? floorLog2( side ) + 1 : 0;
 	const points = new Float64Array( p.length );
 	for ( let i = 0; i < p.length; i ++ ) {
@@ -200,7 +201,11 @@ export interface DelaunayReport {
 	volumeSum: number;
 	/** Volume enclosed by the hull faces, in the input's units (likewise). */
 	hullVolume: number;
-	/** |volumeSum − hullVolume| / hullVolume, computed at unit scale (meaningful at any scale). */
+	/**
+	 * |volumeSum − hullVolume| relative to the sum of the magnitudes of the hull's cone volumes (the
+	 * scale of the rounding in hullVolume), computed at unit scale; for hulls too thin for floating
+	 * point, 0 or 1 as the exact identity holds or not (meaningful at any scale).
+	 */
 	tilingError: number;
 
 }
@@ -220,7 +225,7 @@ export function checkDelaunay(
 		hullViolations: 0, emptySphereViolations: 0, volumeSum: 0, hullVolume: 0, tilingError: 0,
 	};
 
-	let volumeSum = 0, hullVolume = 0;
+	let volumeSum = 0, hullVolume = 0, coneMagnitudes = 0;
 	const used = new Uint8Array( n );
 	for ( let t = 0; t < count; t ++ ) {
 
@@ -267,7 +272,9 @@ export function checkDelaunay(
 			// The cell with its inner vertex moved to the apex: the signed volume of the cone from the
 			// apex over this face, positive when the apex is on the inner side. Summed over a closed
 			// outward surface, these give the enclosed volume wherever the apex is.
-			hullVolume += coneVolume( p, v, i, centroid );
+			const cone = coneVolume( p, v, i, centroid );
+			hullVolume += cone;
+			coneMagnitudes += Math.abs( cone );
 
 		}
 
@@ -275,9 +282,48 @@ export function checkDelaunay(
 
 	report.volumeSum = times2( volumeSum, 3 * exponent );
 	report.hullVolume = times2( hullVolume, 3 * exponent );
-	report.tilingError = Math.abs( volumeSum - hullVolume ) / hullVolume;
+	report.tilingError = Math.abs( volumeSum - hullVolume ) / coneMagnitudes;
+	// A hull too thin for floating-point volumes: the same identity in exact arithmetic.
+	if ( ! ( report.tilingError <= 1e-9 ) ) report.tilingError = exactTiling( p, tetrahedra, neighbors ) ? 0 : 1;
 	report.emptySphereViolations = countEmptySphereViolations( p, safe, tetrahedra, skip );
 	return report;
+
+}
+
+/**
+ * Whether the tetrahedra's volumes sum exactly (BigInt) to the cones from point 0 over the hull
+ * faces (neighbour −1): the divergence theorem, an identity for cells that tile their hull.
+ */
+function exactTiling( p: Float64Array, tetrahedra: Uint32Array, neighbors: Int32Array ): boolean {
+
+	const w = bigIntegers( Array.from( p ) );
+	const det = ( v: number[] ) => {
+
+		const [ a, b, c, d ] = v.map( ( i ) => [ w[ 3 * i ], w[ 3 * i + 1 ], w[ 3 * i + 2 ] ] );
+		const u = [ 0, 1, 2 ].map( ( k ) => b[ k ] - a[ k ] ), s = [ 0, 1, 2 ].map( ( k ) => c[ k ] - a[ k ] );
+		const t = [ 0, 1, 2 ].map( ( k ) => d[ k ] - a[ k ] );
+		return u[ 0 ] * ( s[ 1 ] * t[ 2 ] - s[ 2 ] * t[ 1 ] ) - u[ 1 ] * ( s[ 0 ] * t[ 2 ] - s[ 2 ] * t[ 0 ] )
+			+ u[ 2 ] * ( s[ 0 ] * t[ 1 ] - s[ 1 ] * t[ 0 ] );
+
+	};
+
+	let cells = 0n, cones = 0n;
+	for ( let t = 0; t < tetrahedra.length / 4; t ++ ) {
+
+		const v = Array.from( tetrahedra.subarray( 4 * t, 4 * t + 4 ) );
+		cells += det( v );
+		for ( let i = 0; i < 4; i ++ ) {
+
+			if ( neighbors[ 4 * t + i ] !== - 1 ) continue;
+			const cone = v.slice();
+			cone[ i ] = 0;
+			cones += det( cone );
+
+		}
+
+	}
+
+	return cells === cones;
 
 }
 

@@ -131,15 +131,19 @@ function activeIds( mesh: DynamicTetrahedralization ): number[] {
 
 }
 
-/** Every check of the file on the current state; `label` names the edit in failure messages. */
-function verify( mesh: DynamicTetrahedralization, mirror: Mirror | null, label: string, bruteForce = true ): void {
+/**
+ * Every check of the file on the current state; `label` names the edit in failure messages. `far`:
+ * points far beyond the initial extent, so the reference is built without tolerances (the mesh keeps
+ * its initial ones) and the tiling is checked at unit scale (volumes in the input's units overflow).
+ */
+function verify( mesh: DynamicTetrahedralization, mirror: Mirror | null, label: string, bruteForce = true, far = false ): void {
 
 	const ids = activeIds( mesh );
 	expect( ids.length, label ).toBe( mesh.activeCount );
 	const points = new Float64Array( 3 * ids.length );
 	ids.forEach( ( id, j ) => points.set( mesh.positions.subarray( 3 * id, 3 * id + 3 ), 3 * j ) );
 
-	const scratch = tetrahedralize( points );
+	const scratch = tetrahedralize( points, far ? { duplicateTolerance: 0, planarTolerance: 0 } : {} );
 	expect( canonical( mesh.tetrahedra ), `${label}: same tetrahedra as from scratch` ).toBe( canonical( scratch.tetrahedra, ids ) );
 
 	if ( bruteForce ) {
@@ -152,7 +156,8 @@ function verify( mesh: DynamicTetrahedralization, mirror: Mirror | null, label: 
 		expect( report.unusedPoints, `${label}: unused points` ).toBe( 0 );
 		expect( report.hullViolations, `${label}: hull` ).toBe( 0 );
 		expect( report.emptySphereViolations, `${label}: empty spheres` ).toBe( 0 );
-		expect( Math.abs( report.volumeSum - report.hullVolume ), `${label}: tiling` ).toBeLessThanOrEqual( 1e-9 * report.hullVolume );
+		if ( far ) expect( report.tilingError, `${label}: tiling` ).toBeLessThanOrEqual( 1e-9 );
+		else expect( Math.abs( report.volumeSum - report.hullVolume ), `${label}: tiling` ).toBeLessThanOrEqual( 1e-9 * report.hullVolume );
 
 	}
 
@@ -469,7 +474,51 @@ describe( 'DynamicTetrahedralization: ids, errors and degenerate edits', () => {
 		expect( () => mesh.remove( 1.5 ) ).toThrow( RangeError );
 		expect( () => mesh.move( 2, 0, 0, Infinity ) ).toThrow( /move: .*Infinity/ );
 		expect( () => new DynamicTetrahedralization( gridPoints( 4, 4, 1, 1 ) ) ).toThrow( /DynamicTetrahedralization: .* one plane/ );
+		expect( () => new DynamicTetrahedralization( randomPoints( 10, 1 ), { duplicateTolerance: NaN } ) )
+			.toThrow( new RangeError( 'DynamicTetrahedralization: options.duplicateTolerance must be a finite number ≥ 0, got NaN.' ) );
+		expect( () => new DynamicTetrahedralization( randomPoints( 10, 1 ), { planarTolerance: - 1 } ) )
+			.toThrow( /^DynamicTetrahedralization: options.planarTolerance/ );
+		expect( () => new DynamicTetrahedralization( randomPoints( 10, 1 ), { seed: 'x' as unknown as number } ) ).toThrow( TypeError );
 		verify( mesh, null, 'after bad arguments' );
+
+	} );
+
+	it( 'moves and inserts far beyond the layout (1e20 … 1.7e308) exactly, in a new scale when needed', () => {
+
+		// Moving a point to 1e20 used to give inverted tetrahedra, and later hull faces sharing an edge.
+		const mesh = new DynamicTetrahedralization( randomPoints( 40, 3 ) );
+		const mirror = new Mirror( mesh );
+		for ( const far of [ 1e20, - 1e60, 1e200, 1.7e308 ] ) {
+
+			mesh.move( 5, far, 0.5, 0.5 );
+			expect( Array.from( mesh.positions.subarray( 15, 18 ) ) ).toEqual( [ far, 0.5, 0.5 ] );
+			verify( mesh, mirror, `moved to ${far}`, true, true );
+			const id = mesh.insert( 0.5, - far, 0.25 );
+			verify( mesh, mirror, `inserted at ${- far}`, true, true );
+			mesh.remove( id );
+			mesh.move( 5, 0.3, 0.3, 0.3 );
+			verify( mesh, mirror, `back from ${far}` );
+
+		}
+
+	} );
+
+	it( 'refuses an edit float64 cannot hold beside the others (\'unrepresentable\'), leaving everything as it was', () => {
+
+		const mesh = new DynamicTetrahedralization( randomPoints( 30, 4 ).map( ( v ) => v * 1e-300 ) );
+		const before = canonical( mesh.tetrahedra ), positions = mesh.positions.slice();
+		for ( const edit of [ () => mesh.insert( 1e10, 0, 0 ), () => mesh.move( 3, 0, - 1e10, 0 ) ] ) {
+
+			expect( edit ).toThrow( expect.objectContaining( { name: 'DegenerateInputError', reason: 'unrepresentable' } ) );
+			expect( canonical( mesh.tetrahedra ) ).toBe( before );
+			expect( Array.from( mesh.positions ) ).toEqual( Array.from( positions ) );
+			expect( mesh.pointCount ).toBe( 30 );
+
+		}
+
+		expect( () => mesh.insert( 1e10, 0, 0 ) ).toThrow( /^DynamicTetrahedralization\.insert: .* float64 cannot hold it/ );
+		mesh.insert( 5e-301, 5e-301, 5e-301 );
+		verify( mesh, null, 'a representable insertion after the refused ones' );
 
 	} );
 

@@ -203,6 +203,50 @@ describe( 'tetrahedralize: duplicates and bad input', () => {
 
 } );
 
+describe( 'tetrahedralize: options are checked where they enter', () => {
+
+	const cube = gridPoints( 2, 2, 2, 1 );
+
+	it( 'rejects a NaN, negative, infinite or non-number tolerance, naming the API and the option', () => {
+
+		expect( () => tetrahedralize( cube, { duplicateTolerance: NaN } ) )
+			.toThrow( new RangeError( 'tetrahedralize: options.duplicateTolerance must be a finite number ≥ 0, got NaN.' ) );
+		expect( () => tetrahedralize( cube, { duplicateTolerance: - 1e-9 } ) ).toThrow( RangeError );
+		expect( () => tetrahedralize( cube, { duplicateTolerance: Infinity } ) ).toThrow( /^tetrahedralize: options.duplicateTolerance must be a finite number ≥ 0, got Infinity/ );
+		expect( () => tetrahedralize( cube, { planarTolerance: - 1 } ) ).toThrow( /^tetrahedralize: options.planarTolerance must be a finite number ≥ 0, got -1/ );
+		expect( () => tetrahedralize( cube, { planarTolerance: '1e-9' as unknown as number } ) ).toThrow( TypeError );
+		expect( () => tetrahedralize( cube, { duplicateTolerance: '0' as unknown as number } ) ).toThrow( /got the string "0"/ );
+		expect( () => tetrahedralize( cube, { seed: NaN } ) ).toThrow( /^tetrahedralize: options.seed must be a finite number, got NaN/ );
+		expect( () => tetrahedralize( cube, null as unknown as object ) ).toThrow( new TypeError( 'tetrahedralize: options must be an object, got null.' ) );
+		expect( () => tetrahedralize( cube, [] as unknown as object ) ).toThrow( /^tetrahedralize: options must be an object/ );
+
+	} );
+
+	it( 'a tolerance of 0 keeps distinct points however close, merges exact duplicates, and never returns a flat tetrahedron', () => {
+
+		const points = Float64Array.from( [ ...cube, 1, 1, 1, 1, 1, 1 + 1e-15, 0.5, 0.5, 0.5 ] );
+		const { tetrahedra, neighbors, duplicates } = tetrahedralize( points, { duplicateTolerance: 0, planarTolerance: 0 } );
+		expect( Array.from( duplicates ) ).toEqual( [ 8, 7 ] );
+		expectValid( checkDelaunay( points, tetrahedra, neighbors, new Set( [ 8 ] ) ), 1 );
+		expect( Array.from( tetrahedra ) ).toContain( 9 );
+
+	} );
+
+	it( 'a planar tolerance of 0 rejects only exactly coplanar or collinear sets', () => {
+
+		const flat = gridPoints( 3, 3, 1, 1 );
+		expect( () => tetrahedralize( flat, { planarTolerance: 0 } ) ).toThrow( expect.objectContaining( { reason: 'coplanar' } ) );
+		expect( () => tetrahedralize( gridPoints( 5, 1, 1, 1 ), { planarTolerance: 0 } ) ).toThrow( expect.objectContaining( { reason: 'collinear' } ) );
+		// 1e-300 above the plane, beside a point of it: distinct only without tolerances, and then a volume.
+		const almost = Float64Array.from( [ ...flat, 1, 1, 1e-300 ] ), exact = { duplicateTolerance: 0, planarTolerance: 0 };
+		const { tetrahedra, neighbors } = tetrahedralize( almost, exact );
+		expectValid( checkDelaunay( almost, tetrahedra, neighbors ) );
+		expect( () => tetrahedralize( almost, { duplicateTolerance: 0 } ) ).toThrow( expect.objectContaining( { reason: 'coplanar' } ) );
+
+	} );
+
+} );
+
 describe( 'the brute-force checker itself catches broken meshes', () => {
 
 	const points = randomPoints( 60, 4 );
