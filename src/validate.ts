@@ -108,7 +108,9 @@ export function assertNumber( where: string, name: string, value: unknown ): ass
 /**
  * Checks that `value` is an integer in [min, max].
  */
-export function assertInteger( where: string, name: string, value: unknown, min: number, max = Number.MAX_SAFE_INTEGER ): asserts value is number {
+export function assertInteger(
+	where: string, name: string, value: unknown, min: number, max = Number.MAX_SAFE_INTEGER,
+): asserts value is number {
 
 	if ( typeof value !== 'number' || ! Number.isInteger( value ) || value < min || value > max ) {
 

@@ -100,10 +100,12 @@ export class SHProjector {
 			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, defines, depthTest: false, depthWrite: false,
 		} );
 		this.cubeMaterial = material( shProjectCubeFrag, {
-			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, tiles: { value: 1 }, block: { value: 1 }, rowOffset: { value: 0 }, outputIndex: { value: 0 },
+			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, tiles: { value: 1 }, block: { value: 1 },
+			rowOffset: { value: 0 }, outputIndex: { value: 0 },
 		} );
 		this.equirectMaterial = material( shProjectEquirectFrag, {
-			panorama: { value: null }, size: { value: [ 0, 0 ] }, tiles: { value: 1 }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 }, outputIndex: { value: 0 },
+			panorama: { value: null }, size: { value: [ 0, 0 ] }, tiles: { value: 1 }, block: { value: [ 1, 1 ] },
+			rowOffset: { value: 0 }, outputIndex: { value: 0 },
 		} );
 		this.reduceMaterial = material( shReduceFrag, {
 			source0: { value: null }, source1: { value: null }, source2: { value: null }, source3: { value: null }, factor: { value: 2 },
@@ -132,7 +134,9 @@ export class SHProjector {
 		let supported = multipleTargetSupport.get( renderer );
 		if ( supported !== undefined ) return supported;
 
-		const target = new WebGLRenderTarget( 1, 1, { type: FloatType, count: 2, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter } );
+		const target = new WebGLRenderTarget( 1, 1, {
+			type: FloatType, count: 2, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter,
+		} );
 		const material = new RawShaderMaterial( {
 			glslVersion: GLSL3, vertexShader: fullscreenVert,
 			fragmentShader: 'precision highp float;\nlayout( location = 0 ) out vec4 a;\nlayout( location = 1 ) out vec4 b;\nvoid main() { a = vec4( 1.0 ); b = vec4( 2.0 ); }',

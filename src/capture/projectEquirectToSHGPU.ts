@@ -14,7 +14,9 @@ import { assertRenderer } from './captureSettings.js';
  * @param target Receives the 27 floats; a new Float32Array(27) when omitted.
  * @returns `target`.
  */
-export function projectEquirectToSHGPU( renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ) ): Float32Array {
+export function projectEquirectToSHGPU(
+	renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ),
+): Float32Array {
 
 	assertRenderer( 'projectEquirectToSHGPU', renderer );
 	const kind = texture as { isTexture?: boolean; isCubeTexture?: boolean } | null;

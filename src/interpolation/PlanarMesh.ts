@@ -158,7 +158,9 @@ export class PlanarMesh implements ProbeInterpolator {
 	 * Probes and weights for (x, y, z) projected onto the plane. Allocation-free.
 	 * @returns The triangle used; pass it back as `hint` next time.
 	 */
-	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1 ): number {
+	interpolate(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint = - 1,
+	): number {
 
 		const o = this.origin, ax = this.axes, s = this.toLocal;
 		const dx = x * s - o[ 0 ], dy = y * s - o[ 1 ], dz = z * s - o[ 2 ];
@@ -230,7 +232,9 @@ export class PlanarMesh implements ProbeInterpolator {
 	}
 
 	/** Nearest point on the boundary polygon: two probes weighted along an edge. */
-	private nearestOnHull( u: number, v: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[] ): number {
+	private nearestOnHull(
+		u: number, v: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[],
+	): number {
 
 		const q = this.planePositions, hull = this.hull;
 		let best = Infinity;

@@ -22,6 +22,8 @@ export interface ProbeInterpolator {
 	 * @param hint The value this method returned for a nearby position (e.g. last frame), or −1.
 	 * @returns A cell index to pass back as the next `hint`.
 	 */
-	interpolate( x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint?: number ): number;
+	interpolate(
+		x: number, y: number, z: number, indices: Uint32Array | number[], weights: Float32Array | Float64Array | number[], hint?: number,
+	): number;
 
 }

@@ -10,7 +10,9 @@ import { PlanarMesh } from './PlanarMesh.js';
  * @throws {TypeError|RangeError} for options that are not an object or tolerances that are not
  *   finite numbers ≥ 0, named as this function's.
  */
-export function createProbeInterpolator( positions: ArrayLike<number>, options: TetrahedralMeshOptions = {} ): TetrahedralMesh | PlanarMesh {
+export function createProbeInterpolator(
+	positions: ArrayLike<number>, options: TetrahedralMeshOptions = {},
+): TetrahedralMesh | PlanarMesh {
 
 	readOptions( 'createProbeInterpolator', options );
 	try {

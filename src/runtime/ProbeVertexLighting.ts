@@ -126,7 +126,11 @@ export class ProbeVertexLighting {
 		this.field = field;
 		this.output = output;
 		this.geometry = geometry;
-		this.uniforms = { probeVolumeMatrices: { value: new Float32Array( 48 ) }, probeVolumeIntensity: { value: intensity }, probeVolumeDirectScale: { value: 1 } };
+		this.uniforms = {
+			probeVolumeMatrices: { value: new Float32Array( 48 ) },
+			probeVolumeIntensity: { value: intensity },
+			probeVolumeDirectScale: { value: 1 },
+		};
 
 		const count = position.count;
 		if ( output === 'irradiance' ) {

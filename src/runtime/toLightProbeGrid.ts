@@ -24,7 +24,9 @@ import type { ProbeVolumeTexture } from './ProbeVolumeTexture.js';
  * @param target A grid to configure instead of a new one.
  * @returns The configured grid; add it to the scene.
  */
-export function toLightProbeGrid( volumeTexture: ProbeVolumeTexture, target: LightProbeGridWebGL = new LightProbeGridWebGL() ): LightProbeGridWebGL {
+export function toLightProbeGrid(
+	volumeTexture: ProbeVolumeTexture, target: LightProbeGridWebGL = new LightProbeGridWebGL(),
+): LightProbeGridWebGL {
 
 	if ( ! volumeTexture || ! ( volumeTexture as { texture?: { isData3DTexture?: boolean } } ).texture?.isData3DTexture ) {
 
@@ -34,7 +36,9 @@ export function toLightProbeGrid( volumeTexture: ProbeVolumeTexture, target: Lig
 
 	if ( ( target as { isLightProbeGrid?: boolean } )?.isLightProbeGrid !== true ) throw new TypeError( 'toLightProbeGrid: target must be a LightProbeGridWebGL.' );
 	const { min, max, resolution } = volumeTexture;
-	const spacing = [ ( max.x - min.x ) / ( resolution.x - 1 ), ( max.y - min.y ) / ( resolution.y - 1 ), ( max.z - min.z ) / ( resolution.z - 1 ) ];
+	const spacing = [
+		( max.x - min.x ) / ( resolution.x - 1 ), ( max.y - min.y ) / ( resolution.y - 1 ), ( max.z - min.z ) / ( resolution.z - 1 ),
+	];
 	target.width = max.x - min.x + spacing[ 0 ];
 	target.height = max.y - min.y + spacing[ 1 ];
 	target.depth = max.z - min.z + spacing[ 2 ];

@@ -276,10 +276,36 @@ export class DelaunayBuilder {
 		// Ghost: in conflict when q is strictly beyond the hull face, or on its plane and inside
 		// the face's perturbed circumcircle.
 		let o: number, f0: number, f1: number, f2: number;
-		if ( a === INF ) { o = orient( p, q, b, c, d ); f0 = b; f1 = c; f2 = d; }
-		else if ( b === INF ) { o = orient( p, a, q, c, d ); f0 = a; f1 = c; f2 = d; }
-		else if ( c === INF ) { o = orient( p, a, b, q, d ); f0 = a; f1 = b; f2 = d; }
-		else { o = orient( p, a, b, c, q ); f0 = a; f1 = b; f2 = c; }
+		if ( a === INF ) {
+
+			o = orient( p, q, b, c, d );
+			f0 = b;
+			f1 = c;
+			f2 = d;
+
+		} else if ( b === INF ) {
+
+			o = orient( p, a, q, c, d );
+			f0 = a;
+			f1 = c;
+			f2 = d;
+
+		} else if ( c === INF ) {
+
+			o = orient( p, a, b, q, d );
+			f0 = a;
+			f1 = b;
+			f2 = d;
+
+		} else {
+
+			o = orient( p, a, b, c, q );
+			f0 = a;
+			f1 = b;
+			f2 = c;
+
+		}
+
 		if ( o !== 0 ) return o > 0;
 		return inCirclePerturbed( p, f0, f1, f2, q, this.extent ) > 0;
 

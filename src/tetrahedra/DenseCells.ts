@@ -223,6 +223,7 @@ export class DenseCells {
 			const c = index[ slot ];
 			if ( c >= 0 ) this.changedCells[ changed ++ ] = c;
 			else if ( report[ slot ] !== stamp ) { report[ slot ] = stamp; this.changedHullFaces[ changedHull ++ ] = - c - 2; }
+
 			for ( let i = 0; i < 4; i ++ ) {
 
 				const u = adj[ 4 * slot + i ] >> 2;
@@ -271,10 +272,32 @@ export class DenseCells {
 			// Counter-clockwise from outside: the face without vertex i of the positive tetrahedron t,
 			// ordered so that vertex i is on its negative side (TetrahedralMesh's convention).
 			let a: number, b: number, d: number;
-			if ( i === 0 ) { a = v[ k + 1 ]; b = v[ k + 2 ]; d = v[ k + 3 ]; }
-			else if ( i === 1 ) { a = v[ k ]; b = v[ k + 3 ]; d = v[ k + 2 ]; }
-			else if ( i === 2 ) { a = v[ k ]; b = v[ k + 1 ]; d = v[ k + 3 ]; }
-			else { a = v[ k ]; b = v[ k + 2 ]; d = v[ k + 1 ]; }
+			if ( i === 0 ) {
+
+				a = v[ k + 1 ];
+				b = v[ k + 2 ];
+				d = v[ k + 3 ];
+
+			} else if ( i === 1 ) {
+
+				a = v[ k ];
+				b = v[ k + 3 ];
+				d = v[ k + 2 ];
+
+			} else if ( i === 2 ) {
+
+				a = v[ k ];
+				b = v[ k + 1 ];
+				d = v[ k + 3 ];
+
+			} else {
+
+				a = v[ k ];
+				b = v[ k + 2 ];
+				d = v[ k + 1 ];
+
+			}
+
 			this.hullFaces[ 3 * h ] = a; this.hullFaces[ 3 * h + 1 ] = b; this.hullFaces[ 3 * h + 2 ] = d;
 			this.hullFaceCells[ h ] = index[ t ];
 

@@ -414,10 +414,31 @@ const _three = new Int32Array( 3 );
 function otherThree( v: Int32Array, t: number, j: number ): void {
 
 	const k = 4 * t;
-	if ( j === 0 ) { _three[ 0 ] = v[ k + 1 ]; _three[ 1 ] = v[ k + 2 ]; _three[ 2 ] = v[ k + 3 ]; }
-	else if ( j === 1 ) { _three[ 0 ] = v[ k ]; _three[ 1 ] = v[ k + 2 ]; _three[ 2 ] = v[ k + 3 ]; }
-	else if ( j === 2 ) { _three[ 0 ] = v[ k ]; _three[ 1 ] = v[ k + 1 ]; _three[ 2 ] = v[ k + 3 ]; }
-	else { _three[ 0 ] = v[ k ]; _three[ 1 ] = v[ k + 1 ]; _three[ 2 ] = v[ k + 2 ]; }
+	if ( j === 0 ) {
+
+		_three[ 0 ] = v[ k + 1 ];
+		_three[ 1 ] = v[ k + 2 ];
+		_three[ 2 ] = v[ k + 3 ];
+
+	} else if ( j === 1 ) {
+
+		_three[ 0 ] = v[ k ];
+		_three[ 1 ] = v[ k + 2 ];
+		_three[ 2 ] = v[ k + 3 ];
+
+	} else if ( j === 2 ) {
+
+		_three[ 0 ] = v[ k ];
+		_three[ 1 ] = v[ k + 1 ];
+		_three[ 2 ] = v[ k + 3 ];
+
+	} else {
+
+		_three[ 0 ] = v[ k ];
+		_three[ 1 ] = v[ k + 1 ];
+		_three[ 2 ] = v[ k + 2 ];
+
+	}
 
 }
 
