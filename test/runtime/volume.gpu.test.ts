@@ -810,7 +810,7 @@ describe.skipIf( ! ctx.renderer )( `LightProbeVolume on a real GL context (headl
 
 		} );
 
-		it( 'context loss — not testable in headless-gl (no WEBGL_lose_context); covered in the browser test', () => {
+		it( 'environment check: headless-gl still lacks WEBGL_lose_context, so context loss is tested in the browser suite (test/browser/contextLoss.test.ts)', () => {
 
 			// ProbeCapturer.capture checks isContextLost() between probes and keeps the SH held
 			// on loss; exercising that needs WEBGL_lose_context, which headless-gl lacks. If this
