@@ -104,6 +104,48 @@ describe( 'PlanarMesh and createProbeInterpolator (coplanar layouts: a floor of 
 
 	} );
 
+	it( 'interpolates the same at any scale (1e-300 … 1e300, 2^±1000): finite weights, the unit-scale ones', () => {
+
+		const unit = new PlanarMesh( positions );
+		const random = seededRandom( 17 ), queries: number[][] = [];
+		for ( let q = 0; q < 300; q ++ ) queries.push( [ random() * 8 - 2, random() * 8 - 2, random() * 8 - 2 ] );
+		const expected = queries.map( ( q ) => {
+
+			const i = new Uint32Array( 4 ), w = new Float64Array( 4 );
+			unit.interpolate( q[ 0 ], q[ 1 ], q[ 2 ], i, w );
+			return { i, w };
+
+		} );
+		for ( const s of [ 1e-300, 1e-200, 2 ** - 1000, 1e200, 1e300, 2 ** 1000 ] ) {
+
+			const mesh = new PlanarMesh( positions.map( ( v ) => v * s ) );
+			expect( mesh.cellCount ).toBe( unit.cellCount );
+			queries.forEach( ( q, n ) => {
+
+				mesh.interpolate( q[ 0 ] * s, q[ 1 ] * s, q[ 2 ] * s, indices, weights );
+				expect( Array.from( weights ).every( Number.isFinite ), `${s}, query ${n}` ).toBe( true );
+				// A field with one value per probe: the same weights on the same probes give the same blend.
+				const value = ( i: ArrayLike<number>, w: ArrayLike<number> ) => w[ 0 ] * ( i[ 0 ] + 1 ) + w[ 1 ] * ( i[ 1 ] + 1 ) + w[ 2 ] * ( i[ 2 ] + 1 );
+				expect( Math.abs( value( indices, weights ) - value( expected[ n ].i, expected[ n ].w ) ), `${s}, query ${n}` ).toBeLessThan( 1e-9 * 30 );
+
+			} );
+
+		}
+
+	} );
+
+	it( 'checks its tolerance where it enters (and createProbeInterpolator its options), naming itself', () => {
+
+		expect( () => new PlanarMesh( positions, NaN ) ).toThrow( new RangeError( 'PlanarMesh: duplicateTolerance must be a finite number ≥ 0, got NaN.' ) );
+		expect( () => new PlanarMesh( positions, - 1e-9 ) ).toThrow( RangeError );
+		expect( () => new PlanarMesh( positions, '0' as unknown as number ) ).toThrow( TypeError );
+		expect( () => createProbeInterpolator( positions, { duplicateTolerance: NaN } ) )
+			.toThrow( /^createProbeInterpolator: options.duplicateTolerance must be a finite number ≥ 0, got NaN/ );
+		expect( () => createProbeInterpolator( positions, { planarTolerance: - 1 } ) ).toThrow( /^createProbeInterpolator: options.planarTolerance/ );
+		expect( () => createProbeInterpolator( positions, 'x' as unknown as object ) ).toThrow( /^createProbeInterpolator: options must be an object/ );
+
+	} );
+
 	it( 'rejects collinear and too few probes with a DegenerateInputError', () => {
 
 		expect( () => createProbeInterpolator( [ 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3 ] ) ).toThrow( /one line/ );

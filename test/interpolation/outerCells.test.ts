@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import { OuterCells } from '../../src/interpolation/OuterCells.js';
 import { TetrahedralMesh } from '../../src/interpolation/TetrahedralMesh.js';
+import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { gridPoints, randomPoints, seededRandom } from '../helpers/pointSets.js';
 
 /*
@@ -717,3 +719,113 @@ function nearestFaceMesh( mesh: TetrahedralMesh ): TetrahedralMesh {
 	return near;
 
 }
+
+describe( 'outer cells at any scale: finite weights, the same as at unit scale', () => {
+
+	/** Hull triangles counter-clockwise from outside, as TetrahedralMesh derives them. */
+	function hullFaces( tetrahedra: Uint32Array, neighbors: Int32Array ): Uint32Array {
+
+		const faces: number[] = [];
+		for ( let t = 0; t < tetrahedra.length / 4; t ++ ) {
+
+			const [ v0, v1, v2, v3 ] = tetrahedra.subarray( 4 * t, 4 * t + 4 );
+			if ( neighbors[ 4 * t ] === - 1 ) faces.push( v1, v2, v3 );
+			if ( neighbors[ 4 * t + 1 ] === - 1 ) faces.push( v0, v3, v2 );
+			if ( neighbors[ 4 * t + 2 ] === - 1 ) faces.push( v0, v1, v3 );
+			if ( neighbors[ 4 * t + 3 ] === - 1 ) faces.push( v0, v2, v1 );
+
+		}
+
+		return Uint32Array.from( faces );
+
+	}
+
+	/** 300 query points 1.2 to 30 extents from the centre of the points' box, in every direction. */
+	function outsideQueries( points: Float64Array ): number[][] {
+
+		const { min, max, extent } = makeCase( '', points ), center = [ 0, 1, 2 ].map( ( a ) => ( min[ a ] + max[ a ] ) / 2 );
+		const random = seededRandom( 31 ), out: number[][] = [];
+		while ( out.length < 300 ) {
+
+			const d = [ random() - 0.5, random() - 0.5, random() - 0.5 ], l = Math.hypot( ...d ), r = extent * ( 0.6 + 30 * random() ** 2 );
+			if ( l > 0.1 ) out.push( d.map( ( c, a ) => center[ a ] + c / l * r ) );
+
+		}
+
+		return out;
+
+	}
+
+	const sets: [ string, Float64Array ][] = [
+		[ 'random cloud (40)', randomPoints( 40, 11 ) ],
+		[ '4x4x4 grid', gridPoints( 4, 4, 4, 1 ) ],
+		[ 'flat random box', flatRandomPoints( 60, 7 ) ],
+	];
+
+	for ( const [ name, unit ] of sets ) {
+
+		const { tetrahedra, neighbors } = tetrahedralize( unit );
+		const faces = hullFaces( tetrahedra, neighbors );
+		const reference = new OuterCells( unit, faces );
+		const queries = outsideQueries( unit );
+		const expected = queries.map( ( q ) => {
+
+			const out = new Float64Array( 4 );
+			return { cell: reference.locate( q[ 0 ], q[ 1 ], q[ 2 ], - 1, out ), out };
+
+		} );
+
+		it( `${name} × 2^k, k = −1000 … 1000: the same cells and weights, bit for bit`, () => {
+
+			expect( expected.filter( ( e ) => e.cell >= 0 ).length ).toBeGreaterThan( 250 );
+
+			for ( const k of [ - 1000, - 400, - 101, 101, 150, 500, 1000 ] ) {
+
+				const points = unit.map( ( v ) => v * 2 ** k );
+				const scaled = tetrahedralize( points );
+				expect( Array.from( scaled.tetrahedra ) ).toEqual( Array.from( tetrahedra ) );
+				const cells = new OuterCells( points, faces );
+				const out = new Float64Array( 4 );
+				queries.forEach( ( q, i ) => {
+
+					const cell = cells.locate( q[ 0 ] * 2 ** k, q[ 1 ] * 2 ** k, q[ 2 ] * 2 ** k, - 1, out );
+					expect( cell, `2^${k}, query ${i}` ).toBe( expected[ i ].cell );
+					expect( Array.from( out.subarray( 1 ) ), `2^${k}, query ${i}` ).toEqual( Array.from( expected[ i ].out.subarray( 1 ) ) );
+					expect( out[ 0 ] ).toBe( cell < 0 ? - 1 : expected[ i ].out[ 0 ] * 2 ** k );
+
+				} );
+
+			}
+
+		} );
+
+		it( `${name} × 1e-300 … 1e300: finite weights summing to 1, close to the unit-scale ones`, () => {
+
+			for ( const s of [ 1e-300, 1e-150, 1e-100, 1e100, 1e150, 1e300 ] ) {
+
+				const points = unit.map( ( v ) => v * s );
+				const scaled = tetrahedralize( points );
+				const cells = new OuterCells( points, hullFaces( scaled.tetrahedra, scaled.neighbors ) );
+				const out = new Float64Array( 4 );
+				queries.forEach( ( q, i ) => {
+
+					const cell = cells.locate( q[ 0 ] * s, q[ 1 ] * s, q[ 2 ] * s, - 1, out );
+					expect( cell, `${s}, query ${i}` ).toBeGreaterThanOrEqual( 0 );
+					expect( out.every( Number.isFinite ), `${s}, query ${i}` ).toBe( true );
+					expect( Math.abs( out[ 1 ] + out[ 2 ] + out[ 3 ] - 1 ) ).toBeLessThan( 1e-12 );
+					expect( Math.abs( cells.signedDistance( cell, q[ 0 ] * s, q[ 1 ] * s, q[ 2 ] * s ) / s ) ).toBeLessThan( 1e3 );
+					if ( cell === expected[ i ].cell ) {
+
+						for ( let k = 1; k < 4; k ++ ) expect( Math.abs( out[ k ] - expected[ i ].out[ k ] ) ).toBeLessThan( 1e-9 );
+
+					}
+
+				} );
+
+			}
+
+		} );
+
+	}
+
+} );
