@@ -88,7 +88,8 @@ export class GLTFLightProbeVolumeLoaderPlugin implements GLTFLoaderPlugin {
 /**
  * The glTF bufferView a volume points to, checked before three's loader reads it (three does not
  * check these, and fails deep inside with a TypeError): an object whose `buffer` is an index into
- * `buffers`, with integer `byteOffset` ≥ 0 and `byteLength` ≥ 0 that fit a known buffer length.
+ * `buffers`, with integer `byteOffset` ≥ 0 and `byteLength` ≥ 0 that fit a known buffer length, and
+ * a buffer whose `uri`, when it has one, is a non-empty string.
  */
 function checkBufferView( where: string, json: { bufferViews?: unknown[]; buffers?: unknown[] }, index: number ): void {
 
@@ -109,8 +110,14 @@ function checkBufferView( where: string, json: { bufferViews?: unknown[]; buffer
 
 	}
 
-	const bufferDef = json.buffers![ buffer ] as { byteLength?: unknown } | null;
+	const bufferDef = json.buffers![ buffer ] as { byteLength?: unknown; uri?: unknown } | null;
 	if ( bufferDef === null || typeof bufferDef !== 'object' ) throw new BakedVolumeError( 'json', `${where}: buffers[${buffer}] must be an object.` );
+	if ( bufferDef.uri !== undefined && ( typeof bufferDef.uri !== 'string' || bufferDef.uri === '' ) ) {
+
+		throw new BakedVolumeError( 'json', `${where}: buffers[${buffer}].uri is ${JSON.stringify( bufferDef.uri )}; expected a URI string.` );
+
+	}
+
 	const size = bufferDef.byteLength;
 	if ( isSize( size ) && offset + length > size ) {
 

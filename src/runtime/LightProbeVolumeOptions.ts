@@ -18,13 +18,20 @@ export type ProbeOccluders = VisibilityGuard | TriangleBVH | ArrayLike<number> |
 /** Constructor argument of `LightProbeVolume`. */
 export interface LightProbeVolumeParameters {
 
-	/** Flat x, y, z per probe (at least 3 probes; 4 not all in one plane for a 3D volume). */
+	/**
+	 * Flat x, y, z per probe, each |coordinate| ≤ 1e18 (`POSITION_LIMIT`; docs/format.md). 4 not all
+	 * in one plane give a 3D volume; coplanar probes a planar one; fewer than 3 distinct, or
+	 * collinear ones, interpolate along their line.
+	 */
 	positions: ArrayLike<number>;
 
-	/** 27 floats per probe, three.js `SphericalHarmonics3` layout; zeros (black) when omitted. */
+	/**
+	 * 27 floats per probe, three.js `SphericalHarmonics3` layout, each |value| ≤ 1e30 (`SH_LIMIT`:
+	 * blends and irradiance matrices then stay finite in float32); zeros (black) when omitted.
+	 */
 	sh?: ArrayLike<number>;
 
-	/** Optional name per probe. */
+	/** Optional name per probe: any strings UTF-8 can hold. */
 	names?: readonly string[];
 
 	/** Optional role per probe; default `'fill'`. */
@@ -107,9 +114,11 @@ export interface LightProbeVolumeBounceOptions {
 	output?: 'irradiance' | 'sh';
 
 	/**
-	 * Called after each pass with the pass number (0 = direct light only) and `volume.sh` as it is
-	 * now — the volume's own array, overwritten by the next pass: copy it to keep it. During the
-	 * call the static meshes still carry the light that pass was captured with (none in pass 0).
+	 * Called after each pass with the pass number (0 = direct light only) and the SH of every probe
+	 * after that pass — a staged array, overwritten by the next pass: copy it to keep it. The
+	 * volume's own `sh` receive the last pass only when every pass is done (a capture is all or
+	 * nothing). During the call the static meshes still carry the light that pass was captured
+	 * with (none in pass 0); a throwing callback fails the capture.
 	 */
 	onPass?: ( pass: number, sh: Float32Array ) => void;
 
@@ -156,7 +165,7 @@ export interface AddProbeOptions {
 	role?: ProbeRole;
 
 	/**
-	 * Its SH (27 floats), e.g. captured elsewhere; the probe is then not marked dirty. Default: the
+	 * Its SH (27 floats, each |value| ≤ 1e30), e.g. captured elsewhere; the probe is then not marked dirty. Default: the
 	 * SH interpolated at its position from the probes around it before it was added (so the
 	 * picture does not change until it is captured), and the probe is marked dirty.
 	 */

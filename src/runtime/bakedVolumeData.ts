@@ -118,13 +118,30 @@ export function checkBakedData( where: string, data: unknown ): asserts data is 
 
 /**
  * The constructor parameters of decoded baked data: the stored tetrahedralization as the
- * interpolator (not checked again: the decoder did), or none (the default interpolator is built).
+ * interpolator (not checked again: the decoder did), or none (the default interpolator is built) —
+ * also when the stored tetrahedra do not fill the probes' convex hull, which the format allows
+ * but the outer cells cannot extrapolate from (a warning says so).
  */
 export function parametersFromBakedData( data: BakedVolumeData ): BakedParameters {
 
-	const interpolator = data.tetrahedra.length > 0
-		? TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { trusted: true } )
-		: undefined;
+	let interpolator: ProbeInterpolator | undefined;
+	if ( data.tetrahedra.length > 0 ) {
+
+		try {
+
+			interpolator = TetrahedralMesh.fromTetrahedralization( data.positions, data.tetrahedra, data.neighbors, { trusted: true } );
+
+		} catch ( error ) {
+
+			// The format allows tetrahedra that do not fill the probes' convex hull (docs/format.md);
+			// the outer cells need a convex tiling, so the runtime builds its own.
+			console.warn( `LightProbeVolume.fromBakedData: the stored tetrahedra cannot be used (${( error as Error ).message}); `
+				+ 'the tetrahedralization is rebuilt from the positions.' );
+
+		}
+
+	}
+
 	const zones = data.zones.length > 0
 		? data.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: boxes( zone.bounds ) } ) )
 		: undefined;

@@ -1,7 +1,17 @@
-import { describe, expect, it } from 'vitest';
-import { BakedVolumeError, encodeBakedVolume, decodeBakedVolume, type BakedVolumeData } from '../../src/io/index.js';
+import { beforeAll, describe, expect, it, vi } from 'vitest';
+import { Object3D, Scene } from 'three';
+import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import {
+	BakedVolumeError, bakedVolumeFromJSON, bakedVolumeToJSON, encodeBakedVolume, decodeBakedVolume, type BakedVolumeData,
+} from '../../src/io/index.js';
+import { GLTFLightProbeVolumeExporterPlugin } from '../../src/gltf/GLTFLightProbeVolumeExporterPlugin.js';
+import { GLTFLightProbeVolumeLoaderPlugin } from '../../src/gltf/GLTFLightProbeVolumeLoaderPlugin.js';
+import { GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry } from '../../src/gltf/GLTFLightProbeVolumeExtension.js';
+import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 import { makeVolume, independentCheck, fixChecksum, fourCC } from './helpers.js';
+import { installGLTFNodeStubs } from './gltfNodeStubs.js';
 
 /*
  * Random mutations of valid files. Every decode must either throw a BakedVolumeError or return
@@ -222,6 +232,276 @@ describe( 'baked volume loader fuzz', () => {
 
 		expect( tally.decoded ).toBeGreaterThan( 100 ); // harmless edits (SH values, names) still load
 		console.log( 'fuzz, checksum recomputed:', JSON.stringify( tally.codes ), `decoded ${tally.decoded}, slowest decode ${tally.slowest.toFixed( 1 )} ms` );
+
+	} );
+
+} );
+
+/*
+ * The JSON form, mutated as text: every outcome of bakedVolumeFromJSON (on the text, and on
+ * JSON.parse of it when that parses) is a BakedVolumeError or data that passes the brute-force
+ * check, and LightProbeVolume.fromJSON agrees — it loads every volume the codec accepts (finite
+ * samples) and refuses the others with the codec's BakedVolumeError.
+ */
+
+const JSON_CASES = Number( process.env.BAKED_FUZZ_JSON_CASES ?? 2500 );
+const jsonTexts = [ makeVolume( 12, 2 ), makeVolume( 20, 4, false ), makeVolume( 30, 5 ) ]
+	.map( ( volume ) => JSON.stringify( bakedVolumeToJSON( volume ) ) );
+const NUMBER = /-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?/g;
+const STRING = /"(?:[^"\\]|\\.)*"/g;
+const NUMBER_SWAPS = [ '1e400', '-1e400', '1e39', '3.4e38', '-3.4e38', '1e31', '1e155', '1e19', '-0', '0.5', '1.5', '-1', '4294967296', '2', '99999', 'null', '"7"', 'true', '[]', '{}' ];
+const STRING_SWAPS = [ '""', '"sun"', '"\\ud800"', '"fill"', '"hall"', '1', 'null', '"half"', '"paper-unnormalized"', '"three-capture-lighting/baked-volume"', '[]' ];
+const JUNK = [ ',', ']', '[', '{', '}', ':', '"', 'null', 'true', '-', '1e400', 'NaN', '0', '"x"', '\\u', '\uD800', '\uFEFF' ];
+const JSON_OPS = [ 'delete span', 'insert junk', 'replace number', 'replace string', 'truncate', 'swap numbers' ] as const;
+
+function tokens( text: string, pattern: RegExp ): [ number, number ][] {
+
+	return Array.from( text.matchAll( pattern ), ( m ) => [ m.index!, m.index! + m[ 0 ].length ] );
+
+}
+
+const jsonTokens = jsonTexts.map( ( text ) => ( { numbers: tokens( text, NUMBER ), strings: tokens( text, STRING ) } ) );
+
+function mutateText( random: () => number, source: number ): { text: string; op: string } {
+
+	const text = jsonTexts[ source ], { numbers, strings } = jsonTokens[ source ];
+	const int = ( n: number ): number => Math.floor( random() * n );
+	const pick = <T>( list: readonly T[] ): T => list[ int( list.length ) ];
+	const op = pick( JSON_OPS );
+	const splice = ( [ from, to ]: [ number, number ], by: string ) => text.slice( 0, from ) + by + text.slice( to );
+	switch ( op ) {
+
+		case 'delete span': { const at = int( text.length ); return { text: splice( [ at, at + 1 + int( 20 ) ], '' ), op }; }
+		case 'insert junk': { const at = int( text.length ); return { text: splice( [ at, at ], pick( JUNK ) ), op }; }
+		case 'replace number': return { text: splice( pick( numbers ), pick( NUMBER_SWAPS ) ), op };
+		case 'replace string': return { text: splice( pick( strings ), pick( STRING_SWAPS ) ), op };
+		case 'truncate': return { text: text.slice( 0, int( text.length ) ), op };
+		case 'swap numbers': {
+
+			const a = int( numbers.length ), b = Math.min( numbers.length - 1, a + 1 + int( 8 ) );
+			const [ x, y ] = [ numbers[ a ], numbers[ b ] ];
+			const swapped = text.slice( 0, x[ 0 ] ) + text.slice( y[ 0 ], y[ 1 ] ) + text.slice( x[ 1 ], y[ 0 ] );
+			return { text: swapped + text.slice( x[ 0 ], x[ 1 ] ) + text.slice( y[ 1 ] ), op };
+
+		}
+
+	}
+
+}
+
+/** 'ok' with the data, or the BakedVolumeError's code; anything else is a failure message. */
+function readJSON( read: () => BakedVolumeData ): { data: BakedVolumeData | null; code: string | null; other: string | null } {
+
+	try {
+
+		return { data: read(), code: null, other: null };
+
+	} catch ( error ) {
+
+		if ( error instanceof BakedVolumeError ) return { data: null, code: error.code, other: null };
+		return { data: null, code: null, other: String( error ) };
+
+	}
+
+}
+
+describe( 'JSON form fuzz', () => {
+
+	it( `${JSON_CASES} text mutations: bakedVolumeFromJSON gives a BakedVolumeError or valid data, and LightProbeVolume.fromJSON loads exactly what the codec accepts`, () => {
+
+		const random = mulberry32( 303 + SEED );
+		const failures: string[] = [], codes: Record<string, number> = {};
+		let decoded = 0;
+		// Stored tetrahedra that do not fill the convex hull are rebuilt, with a warning (counted, not printed).
+		const warn = vi.spyOn( console, 'warn' ).mockImplementation( () => {} );
+		for ( let c = 0; c < JSON_CASES; c ++ ) {
+
+			const source = Math.floor( random() * jsonTexts.length );
+			const { text, op } = mutateText( random, source );
+			const fromText = readJSON( () => bakedVolumeFromJSON( text ) );
+			let parsed: unknown, parses = true;
+			try { parsed = JSON.parse( text ); } catch { parses = false; }
+			const fromObject = parses ? readJSON( () => bakedVolumeFromJSON( parsed ) ) : { data: null, code: 'json', other: null };
+			const where = `case ${c} (${op})`;
+			if ( fromText.other || fromObject.other ) failures.push( `${where}: ${fromText.other ?? fromObject.other}` );
+			if ( fromText.code !== fromObject.code ) failures.push( `${where}: text gives ${fromText.code}, the parsed object ${fromObject.code}` );
+			if ( fromText.code ) codes[ fromText.code ] = ( codes[ fromText.code ] ?? 0 ) + 1;
+			let volume: LightProbeVolume | null = null;
+			try {
+
+				volume = LightProbeVolume.fromJSON( text );
+
+			} catch ( error ) {
+
+				if ( fromText.data ) failures.push( `${where}: the codec accepts it but LightProbeVolume.fromJSON throws ${String( error )}` );
+				else if ( ! ( error instanceof BakedVolumeError ) ) failures.push( `${where}: LightProbeVolume.fromJSON threw ${String( error )}` );
+
+			}
+
+			if ( ! fromText.data ) {
+
+				if ( volume ) failures.push( `${where}: the codec refuses it (${fromText.code}) but LightProbeVolume.fromJSON loads it` );
+				continue;
+
+			}
+
+			decoded ++;
+			const problem = independentCheck( fromText.data );
+			if ( problem ) failures.push( `${where}: decoded but invalid: ${problem}` );
+			for ( const p of [ [ 0, 0, 0 ], [ 9, - 7, 3 ] ] ) {
+
+				if ( volume && ! volume.sample( p ).every( Number.isFinite ) ) failures.push( `${where}: sample( ${p} ) is not finite` );
+
+			}
+
+		}
+
+		const rebuilt = warn.mock.calls.length;
+		warn.mockRestore();
+		expect( failures.slice( 0, 10 ) ).toEqual( [] );
+		for ( const code of [ 'json', 'count', 'range', 'nan', 'argument', 'bad-magic' ] ) expect( codes[ code ] ?? 0, code ).toBeGreaterThan( 0 );
+		expect( decoded ).toBeGreaterThan( JSON_CASES / 20 ); // harmless edits (an SH value, a name) still load
+		console.log( 'JSON fuzz:', JSON.stringify( codes ), `decoded ${decoded}, of which ${rebuilt} rebuilt their tetrahedralization` );
+
+	} );
+
+} );
+
+/*
+ * glTF: the bufferViews, buffers and extension entries of a .gltf carrying two volumes (a scene
+ * without meshes, so only the plugin reads the buffer), and the volume bytes in its data: URI,
+ * mutated; every load resolves with volumes that pass the brute-force check and load in the
+ * runtime, or rejects with a BakedVolumeError.
+ */
+
+const GLTF_CASES = Number( process.env.BAKED_FUZZ_GLTF_CASES ?? 300 );
+
+type GLTFJSON = {
+	bufferViews?: ( Record<string, unknown> | null )[]; buffers?: ( Record<string, unknown> | null )[];
+	extensions?: Record<string, { volumes?: unknown } | null>;
+};
+
+async function exportGLTF(): Promise<GLTFJSON> {
+
+	const scene = new Scene();
+	scene.add( new Object3D() );
+	const exporter = new GLTFExporter();
+	const volumes = [ { name: 'hall', data: makeVolume( 12, 2 ) }, { name: '', data: makeVolume( 20, 4, false ) } ];
+	exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, volumes ) );
+	return await exporter.parseAsync( scene, { binary: false } ) as GLTFJSON;
+
+}
+
+function mutateGLTF( random: () => number, base: GLTFJSON ): { json: GLTFJSON; op: string } {
+
+	const json = structuredClone( base );
+	const int = ( n: number ): number => Math.floor( random() * n );
+	const pick = <T>( list: readonly T[] ): T => list[ int( list.length ) ];
+	const set = ( target: Record<string, unknown>, key: string, value: unknown ) => {
+
+		if ( value === undefined ) delete target[ key ]; else target[ key ] = value;
+
+	};
+
+	type Entry = { name?: unknown; bufferView?: unknown };
+	const entries = ( json.extensions![ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ] as { volumes: Entry[] } ).volumes;
+	const view = json.bufferViews![ entries[ int( entries.length ) ].bufferView as number ]!;
+	const ops = [ 'view.buffer', 'view.byteOffset', 'view.byteLength', 'buffers', 'buffer uri', 'entry', 'extension', 'volume bytes', 'volume bytes, checksum fixed' ] as const;
+	const op = pick( ops );
+	switch ( op ) {
+
+		case 'view.buffer': set( view, 'buffer', pick( [ 1, - 1, 0.5, '0', null, undefined, 1e9 ] ) ); break;
+		case 'view.byteOffset': set( view, 'byteOffset', pick( [ - 8, 3, 1e9, '0', null, undefined, ( view.byteOffset as number ) + 8, ( view.byteOffset as number ) - 1 ] ) ); break;
+		case 'view.byteLength': set( view, 'byteLength', pick( [ 0, 1, ( view.byteLength as number ) - 1, ( view.byteLength as number ) + 1, 1e9, null, undefined ] ) ); break;
+		case 'buffers': json.buffers = pick( [ undefined, [], [ null ], [ { byteLength: 0 } ] ] as GLTFJSON[ 'buffers' ][] ); if ( json.buffers === undefined ) delete json.buffers; break;
+		case 'buffer uri': {
+
+			// A new relative URL each time: in Node, three's FileLoader keeps one that Request() refused as
+			// "loading" forever, so a second load of the same one would never settle (browsers resolve it).
+			const fresh = int( 1e9 );
+			json.buffers![ 0 ]!.uri = pick( [ `missing-${fresh}.bin`, 'data:application/octet-stream;base64,', 'data:application/octet-stream;base64,@@@', fresh ] );
+			break;
+
+		}
+
+		case 'entry': {
+
+			const entry = entries[ int( entries.length ) ];
+			if ( random() < 0.5 ) set( entry, 'bufferView', pick( [ - 1, 99, '0', null, 1.5, undefined ] ) );
+			else set( entry, 'name', pick( [ 5, null, {} ] ) );
+			break;
+
+		}
+
+		case 'extension': json.extensions![ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ] = pick( [ null, { volumes: {} }, { volumes: null }, {} ] ) as never; break;
+		case 'volume bytes':
+		case 'volume bytes, checksum fixed': {
+
+			const uri = json.buffers![ 0 ]!.uri as string, comma = uri.indexOf( ',' ) + 1;
+			const bytes = new Uint8Array( Buffer.from( uri.slice( comma ), 'base64' ) );
+			const start = view.byteOffset as number, length = view.byteLength as number;
+			const volume = bytes.subarray( start, start + length );
+			const dv = new DataView( volume.buffer, volume.byteOffset, volume.byteLength );
+			if ( random() < 0.5 ) for ( let k = 1 + int( 4 ); k > 0; k -- ) volume[ int( length ) ] ^= 1 << int( 8 );
+			else dv.setUint32( 4 * int( length / 4 ), pick( EXTREME_U32 ), true );
+			if ( op === 'volume bytes, checksum fixed' ) fixChecksum( volume );
+			json.buffers![ 0 ]!.uri = uri.slice( 0, comma ) + Buffer.from( bytes ).toString( 'base64' );
+			break;
+
+		}
+
+	}
+
+	return { json, op };
+
+}
+
+describe( 'glTF fuzz', () => {
+
+	beforeAll( installGLTFNodeStubs );
+
+	it( `${GLTF_CASES} bufferView, buffer, extension and byte mutations through GLTFLoader and the plugin: valid volumes or a BakedVolumeError`, async () => {
+
+		const base = await exportGLTF();
+		const random = mulberry32( 404 + SEED );
+		const failures: string[] = [], codes: Record<string, number> = {};
+		let loaded = 0;
+		for ( let c = 0; c < GLTF_CASES; c ++ ) {
+
+			const { json, op } = mutateGLTF( random, base );
+			const loader = new GLTFLoader();
+			loader.register( ( parser ) => new GLTFLightProbeVolumeLoaderPlugin( parser ) );
+			try {
+
+				// A load that never settles is a failure too (not a hang of the suite).
+				let timer: ReturnType<typeof setTimeout> | undefined;
+				const gltf = await Promise.race( [
+					loader.parseAsync( JSON.stringify( json ), '' ),
+					new Promise<never>( ( _, reject ) => { timer = setTimeout( () => reject( new Error( 'the load did not settle in 5 s' ) ), 5000 ); } ),
+				] ).finally( () => clearTimeout( timer ) );
+				for ( const { data } of ( gltf.userData.lightProbeVolumes ?? [] ) as GLTFLightProbeVolumeEntry[] ) {
+
+					const problem = independentCheck( data );
+					if ( problem ) failures.push( `case ${c} (${op}): loaded but invalid: ${problem}` );
+					else if ( ! LightProbeVolume.fromBakedData( data ).sample( [ 0, 0, 0 ] ).every( Number.isFinite ) ) failures.push( `case ${c} (${op}): sample not finite` );
+
+				}
+
+				loaded ++;
+
+			} catch ( error ) {
+
+				if ( error instanceof BakedVolumeError ) codes[ error.code ] = ( codes[ error.code ] ?? 0 ) + 1;
+				else failures.push( `case ${c} (${op}): ${String( error )}${op === "buffer uri" ? ` [${String( json.buffers?.[ 0 ]?.uri ).slice( 0, 60 )}]` : ""}` );
+
+			}
+
+		}
+
+		expect( failures.slice( 0, 10 ) ).toEqual( [] );
+		for ( const code of [ 'range', 'json', 'truncated', 'checksum' ] ) expect( codes[ code ] ?? 0, code ).toBeGreaterThan( 0 );
+		expect( loaded ).toBeGreaterThan( 0 );
+		console.log( 'glTF fuzz:', JSON.stringify( codes ), `loaded ${loaded}` );
 
 	} );
 

@@ -1,5 +1,5 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { BoxGeometry, Mesh, MeshStandardMaterial, Scene } from 'three';
+import { BoxGeometry, Mesh, MeshStandardMaterial, Object3D, Scene } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader, type GLTF } from 'three/addons/loaders/GLTFLoader.js';
 import {
@@ -7,65 +7,9 @@ import {
 } from '../../src/index.js';
 import { BakedVolumeError, decodeBakedVolume, type BakedVolumeInput } from '../../src/io/index.js';
 import { makeVolume, independentCheck } from './helpers.js';
+import { installGLTFNodeStubs } from './gltfNodeStubs.js';
 
-/*
- * Node 20 gaps, stubbed here and nothing else: GLTFExporter writes through the browser's
- * FileReader (absent: a minimal one over Blob.arrayBuffer() stands in), and three's FileLoader,
- * which GLTFLoader uses for a .gltf's data: URI buffers, creates ProgressEvents (absent: without
- * one the load never finishes). The scene has no textures (those need a canvas in Node).
- */
-beforeAll( () => {
-
-	if ( typeof ( globalThis as { ProgressEvent?: unknown } ).ProgressEvent === 'undefined' ) {
-
-		( globalThis as { ProgressEvent?: unknown } ).ProgressEvent = class extends Event {
-
-			readonly lengthComputable: boolean; readonly loaded: number; readonly total: number;
-			constructor( type: string, init: { lengthComputable?: boolean; loaded?: number; total?: number } = {} ) {
-
-				super( type );
-				this.lengthComputable = init.lengthComputable ?? false;
-				this.loaded = init.loaded ?? 0;
-				this.total = init.total ?? 0;
-
-			}
-
-		};
-
-	}
-
-	if ( typeof ( globalThis as { FileReader?: unknown } ).FileReader !== 'undefined' ) return;
-	class NodeFileReader {
-
-		result: ArrayBuffer | string | null = null;
-		onloadend: ( () => void ) | null = null;
-		readAsArrayBuffer( blob: Blob ): void {
-
-			void blob.arrayBuffer().then( ( buffer ) => {
-
-				this.result = buffer;
-				this.onloadend?.();
-
-			} );
-
-		}
-
-		readAsDataURL( blob: Blob ): void {
-
-			void blob.arrayBuffer().then( ( buffer ) => {
-
-				this.result = `data:${blob.type || 'application/octet-stream'};base64,${Buffer.from( buffer ).toString( 'base64' )}`;
-				this.onloadend?.();
-
-			} );
-
-		}
-
-	}
-
-	( globalThis as { FileReader?: unknown } ).FileReader = NodeFileReader;
-
-} );
+beforeAll( installGLTFNodeStubs );
 
 function tinyScene(): Scene {
 
@@ -170,6 +114,47 @@ describe( 'glTF extension ' + GLTF_LIGHT_PROBE_VOLUME_EXTENSION, () => {
 
 		const bad = { asset: { version: '2.0' }, extensionsUsed: [ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ], extensions: { [ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ]: { volumes: [ { bufferView: 3 } ] } } };
 		await expect( load( JSON.stringify( bad ) ) ).rejects.toMatchObject( { name: 'BakedVolumeError', code: 'range' } );
+
+	} );
+
+	it( 'a bufferView pointing to a missing buffer, or running past its buffer, or unreadable: a BakedVolumeError, not a TypeError from inside GLTFLoader', async () => {
+
+		// A scene with no mesh: the volume's buffer is read by the plugin alone (a mesh's broken buffer is three's to report).
+		const empty = new Scene();
+		empty.add( new Object3D() );
+		const exporter = new GLTFExporter();
+		exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, [ { name: 'hall', data: a } ] ) );
+		const json = await exporter.parseAsync( empty, { binary: false } ) as {
+			bufferViews: { buffer?: unknown; byteOffset?: unknown; byteLength?: unknown }[]; buffers?: { byteLength: number; uri: string }[];
+			extensions: Record<string, { volumes: { bufferView: number }[] }>;
+		};
+		const view = json.extensions[ GLTF_LIGHT_PROBE_VOLUME_EXTENSION ].volumes[ 0 ].bufferView;
+		const edited = ( edit: ( j: typeof json ) => void ) => {
+
+			const copy = structuredClone( json );
+			edit( copy );
+			return load( JSON.stringify( copy ) );
+
+		};
+
+		const cases: [ ( j: typeof json ) => void, string, RegExp ][] = [
+			[ ( j ) => { j.bufferViews[ view ].buffer = 5; }, 'range', /bufferViews\[\d+\]\.buffer is 5; expected a buffer index \(0\.\.0\)/ ],
+			[ ( j ) => { delete j.buffers; }, 'range', /bufferViews\[\d+\]\.buffer is 0; expected a buffer index \(0\.\.-1\)/ ],
+			[ ( j ) => { j.bufferViews[ view ].buffer = '0'; }, 'range', /buffer is "0"/ ],
+			[ ( j ) => { j.bufferViews[ view ].byteOffset = - 8; }, 'json', /needs integer byteOffset ≥ 0/ ],
+			[ ( j ) => { j.bufferViews[ view ].byteLength = 1e9; }, 'truncated', /runs past the end of buffers\[0\]/ ],
+			[ ( j ) => { j.buffers![ 0 ].uri = 'missing.bin'; }, 'truncated', /could not be read/ ],
+			[ ( j ) => { j.bufferViews[ view ] = null as never; }, 'json', /bufferViews\[\d+\] must be an object/ ],
+		];
+		for ( const [ edit, code, message ] of cases ) {
+
+			const error = await edited( edit ).then( () => null, ( caught: unknown ) => caught );
+			expect( error, String( message ) ).toBeInstanceOf( BakedVolumeError );
+			expect( error ).toMatchObject( { code } );
+			expect( ( error as Error ).message ).toMatch( /^GLTFLightProbeVolumeLoaderPlugin: volumes\[0\]/ );
+			expect( ( error as Error ).message ).toMatch( message );
+
+		}
 
 	} );
 

@@ -146,9 +146,13 @@ export function independentCheck( d: BakedVolumeData ): string | null {
 	const n = d.positions.length / 3;
 	if ( ! Number.isInteger( n ) || n < 1 ) return 'positions length';
 	if ( d.sh.length !== 27 * n ) return 'sh length';
-	for ( const v of d.positions ) if ( ! Number.isFinite( v ) ) return 'positions finite';
-	for ( const v of d.sh ) if ( ! Number.isFinite( v ) ) return 'sh finite';
-	if ( d.names.length !== n || d.names.some( ( s ) => typeof s !== 'string' ) ) return 'names';
+	// docs/format.md: |coordinate| ≤ 1e18, |SH value| ≤ 1e30 (as float32 rounds it), names UTF-8, zone names unique, zones not empty.
+	for ( const v of d.positions ) if ( ! ( Math.abs( v ) <= 1e18 ) ) return 'positions finite and within ±1e18';
+	for ( const v of d.sh ) if ( ! ( Math.abs( v ) <= Math.fround( 1e30 ) ) ) return 'sh finite and within ±1e30';
+	const utf8 = ( text: string ) => new TextDecoder( 'utf-8', { fatal: true } ).decode( new TextEncoder().encode( text ) ) === text;
+	if ( d.names.length !== n || d.names.some( ( s ) => typeof s !== 'string' || ! utf8( s ) ) ) return 'names';
+	if ( new Set( d.zones.map( ( zone ) => zone.name ) ).size !== d.zones.length ) return 'zone names unique';
+	if ( d.zones.some( ( zone ) => zone.probes.length === 0 || ! utf8( zone.name ) ) ) return 'zones hold a probe';
 	if ( d.roles.length !== n || d.roles.some( ( r ) => ! ROLES.has( r ) ) ) return 'roles';
 	if ( d.bounds.length !== 6 || [ 0, 1, 2 ].some( ( k ) => ! ( d.bounds[ k ] <= d.bounds[ k + 3 ] ) ) || ! d.bounds.every( Number.isFinite ) ) return 'bounds';
 	for ( const zone of d.zones ) {

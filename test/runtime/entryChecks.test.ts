@@ -4,7 +4,7 @@
  * CLI's inspect and the runtime share, so that every file the codec accepts loads.
  */
 
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import {
@@ -17,7 +17,12 @@ function grid( scale = 1, offset = 0 ): { positions: Float64Array; sh: Float32Ar
 
 	const positions = new Float64Array( 81 );
 	let i = 0;
-	for ( let x = 0; x < 3; x ++ ) for ( let y = 0; y < 3; y ++ ) for ( let z = 0; z < 3; z ++ ) positions.set( [ offset + scale * x, offset + scale * y, offset + scale * z ], 3 * i ++ );
+	for ( let x = 0; x < 3; x ++ ) for ( let y = 0; y < 3; y ++ ) for ( let z = 0; z < 3; z ++ ) {
+
+		positions.set( [ offset + scale * x, offset + scale * y, offset + scale * z ], 3 * i ++ );
+
+	}
+
 	const sh = new Float32Array( 27 * 27 );
 	for ( let p = 0; p < 27; p ++ ) for ( let k = 0; k < 27; k ++ ) sh[ 27 * p + k ] = k === 0 ? 1 + p : 0.01 * k;
 	return { positions, sh };
@@ -93,7 +98,8 @@ describe( 'values checked where they enter', () => {
 		const other = new THREE.Mesh( new THREE.SphereGeometry( 0.2 ), new THREE.MeshStandardMaterial() );
 		other.position.set( 1.5, 1.5, 1.5 );
 		volume.add( ball ).add( other );
-		const matrices = volume.getUniforms( ball )!.probeVolumeMatrices.value, otherMatrices = volume.getUniforms( other )!.probeVolumeMatrices.value;
+		const matrices = volume.getUniforms( ball )!.probeVolumeMatrices.value;
+		const otherMatrices = volume.getUniforms( other )!.probeVolumeMatrices.value;
 		expect( matrices.some( ( v ) => v !== 0 ) ).toBe( true );
 		for ( const [ l00, l20 ] of [ [ - 3.4e38, 3.4e38 ], [ Infinity, 0 ], [ NaN, 0 ] ] ) {
 
@@ -197,7 +203,8 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 		};
 		const file = encodeBakedVolume( input );
 		expect( decodeBakedVolume( file ).zones.map( ( z ) => z.name ) ).toEqual( [ '', 'one', 'two' ] ); // what inspect reads
-		for ( const volume of [ LightProbeVolume.fromArrayBuffer( file ), LightProbeVolume.fromJSON( JSON.stringify( bakedVolumeToJSON( input ) ) ) ] ) {
+		const text = JSON.stringify( bakedVolumeToJSON( input ) );
+		for ( const volume of [ LightProbeVolume.fromArrayBuffer( file ), LightProbeVolume.fromJSON( text ) ] ) {
 
 			expect( volume.zones!.zones.map( ( z ) => z.name ) ).toEqual( [ '', 'one', 'two' ] );
 			expect( volume.sample( [ 0, 0, 0 ], new Float32Array( 27 ), { zone: '' } )[ 0 ] ).toBeCloseTo( 1, 6 );
@@ -205,6 +212,28 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 			expect( volume.sample( [ 1, 1, 1 ], new Float32Array( 27 ), { zone: 'two' } )[ 0 ] ).toBeCloseTo( 14, 5 ); // halfway from 1 to 27
 
 		}
+
+	} );
+
+	it( 'stored tetrahedra that do not fill the convex hull (which the format allows) load: the runtime rebuilds its tetrahedralization, with a warning', () => {
+
+		const { positions, sh } = grid();
+		const { tetrahedra, neighbors } = makeTetrahedralized( positions ) as unknown as { tetrahedra: Uint32Array; neighbors: Int32Array };
+		// Drop a tetrahedron with a hull face: the rest is still a valid set of linked tetrahedra, with a dent.
+		const ids = Array.from( { length: tetrahedra.length / 4 }, ( _, t ) => t );
+		const dropped = ids.find( ( t ) => neighbors.subarray( 4 * t, 4 * t + 4 ).includes( - 1 ) )!;
+		const kept = ids.filter( ( t ) => t !== dropped );
+		const renumber = ( t: number ) => t < 0 || t === dropped ? - 1 : t - ( t > dropped ? 1 : 0 );
+		const tets = Uint32Array.from( kept.flatMap( ( t ) => Array.from( tetrahedra.subarray( 4 * t, 4 * t + 4 ) ) ) );
+		const links = Int32Array.from( kept.flatMap( ( t ) => Array.from( neighbors.subarray( 4 * t, 4 * t + 4 ), renumber ) ) );
+		const file = encodeBakedVolume( { positions, sh, tetrahedra: tets, neighbors: links } ); // the codec accepts it
+		const warn = vi.spyOn( console, 'warn' ).mockImplementation( () => {} );
+		const volume = LightProbeVolume.fromArrayBuffer( file );
+		expect( warn ).toHaveBeenCalledTimes( 1 );
+		expect( String( warn.mock.calls[ 0 ][ 0 ] ) ).toMatch( /^LightProbeVolume\.fromBakedData: the stored tetrahedra cannot be used .*rebuilt from the positions/ );
+		warn.mockRestore();
+		expect( volume.sample( [ 1, 1, 1 ] )[ 0 ] ).toBeCloseTo( 14, 5 );
+		expect( volume.sample( [ 0.2, 0.1, 0.05 ] ).every( Number.isFinite ) ).toBe( true );
 
 	} );
 
@@ -216,7 +245,9 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 			const volume = LightProbeVolume.fromArrayBuffer( file );
 			expect( volume.count ).toBe( n );
 			// The same data back, but for the volume's bounds box, which the runtime does not keep (it writes the probes' box).
-			const plain = ( d: ReturnType<typeof decodeBakedVolume> ) => JSON.stringify( { ...d, bounds: null }, ( _, v ) => ArrayBuffer.isView( v ) ? Array.from( v as Float64Array ) : v );
+			const plain = ( d: ReturnType<typeof decodeBakedVolume> ) => JSON.stringify(
+				{ ...d, bounds: null }, ( _, v ) => ArrayBuffer.isView( v ) ? Array.from( v as Float64Array ) : v,
+			);
 			expect( plain( decodeBakedVolume( volume.toArrayBuffer() ) ) ).toBe( plain( decodeBakedVolume( file ) ) );
 
 		}

@@ -22,7 +22,8 @@ import { ProbeCapturer } from '../../src/capture/ProbeCapturer.js';
 import { SHProjector } from '../../src/capture/SHProjector.js';
 import { projectEquirectToSHGPU } from '../../src/capture/projectEquirectToSHGPU.js';
 import {
-	bakedVolumeFromJSON, bakedVolumeToJSON, crc32, decodeBakedVolume, encodeBakedVolume, fromFloat16Bits, toFloat16Bits, validateBakedVolume,
+	bakedVolumeFromJSON, bakedVolumeToJSON, crc32, decodeBakedVolume, encodeBakedVolume, fromFloat16Bits, toFloat16Bits,
+	validateBakedVolume,
 } from '../../src/io/index.js';
 import { GLTFLightProbeVolumeExporterPlugin } from '../../src/gltf/GLTFLightProbeVolumeExporterPlugin.js';
 import { GLTFLightProbeVolumeLoaderPlugin } from '../../src/gltf/GLTFLightProbeVolumeLoaderPlugin.js';
@@ -33,7 +34,12 @@ import type { GLTFWriter } from 'three/examples/jsm/exporters/GLTFExporter.js';
 function probes(): { positions: number[]; sh: Float32Array } {
 
 	const positions: number[] = [];
-	for ( let x = 0; x < 4; x ++ ) for ( let y = 0; y < 3; y ++ ) for ( let z = 0; z < 3; z ++ ) positions.push( x, y + 0.01 * x, z + 0.02 * y );
+	for ( let x = 0; x < 4; x ++ ) for ( let y = 0; y < 3; y ++ ) for ( let z = 0; z < 3; z ++ ) {
+
+		positions.push( x, y + 0.01 * x, z + 0.02 * y );
+
+	}
+
 	const sh = new Float32Array( 9 * positions.length );
 	for ( let i = 0; i < sh.length; i ++ ) sh[ i ] = 0.5 + 0.25 * Math.sin( 0.1 * i );
 	return { positions, sh };
