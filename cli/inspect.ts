@@ -14,6 +14,9 @@ export function inspect( file: string, log: ( text: string ) => void = ( text ) 
 
 	if ( ! existsSync( file ) ) throw new CliError( `volume ${file} not found.` );
 	if ( ! statSync( file ).isFile() ) throw new CliError( `volume ${file} is not a file.` );
+	// Node cannot read a file of 2 GiB or more into one buffer; no baked volume is that large.
+	const size = statSync( file ).size;
+	if ( size >= 2 ** 31 ) throw new CliError( `${file} is not a valid baked volume: it has ${size} bytes, more than the 2 GiB a volume file can have.`, 1 );
 	const bytes = readFileSync( file );
 	let volume: ReadVolume;
 	try {

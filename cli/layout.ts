@@ -32,11 +32,15 @@ export function readLayout( file: string ): CliLayout {
 	let json: unknown;
 	try {
 
-		json = JSON.parse( readFileSync( file, 'utf8' ) );
+		// A UTF-8 byte-order mark (Windows editors write one) is not part of the JSON text.
+		json = JSON.parse( readFileSync( file, 'utf8' ).replace( /^\uFEFF/, '' ) );
 
 	} catch ( error ) {
 
-		throw new CliError( `probe layout ${file} is not valid JSON (${( error as Error ).message}); NaN and Infinity cannot be written in JSON.` );
+		const message = ( error as Error ).message;
+		// The hint only where it applies: a bare NaN or Infinity where a number belongs.
+		const hint = /\b(NaN|Infinity)\b/.test( readFileSync( file, 'utf8' ) ) ? '; NaN and Infinity cannot be written in JSON' : '';
+		throw new CliError( `probe layout ${file} is not valid JSON (${message})${hint}.` );
 
 	}
 

@@ -1,4 +1,4 @@
-import { mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, statSync, truncateSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -6,6 +6,8 @@ import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { encodeBakedVolume, bakedVolumeToJSON } from '../../src/io/index.js';
 import { ProgressBar } from '../../cli/progress.js';
 import { parseArguments } from '../../cli/args.js';
+import { readLayout } from '../../cli/layout.js';
+
 import { ROOM_PROBES, runCli, writeLayout, writeLitFloorGLTF, writeRoom } from './fixtures.js';
 
 // Every bad input must be rejected before a browser starts: these runs pass a Chromium path that
@@ -106,6 +108,18 @@ describe( 'capture-lighting bake: bad input exits 2 before a browser starts', ()
 		const floor = writeLitFloorGLTF( dir );
 		rmSync( join( dir, 'floor.bin' ) );
 		expectBadInput( [ 'bake', floor, '--probes', layout, '--out', out ], /floor\.gltf needs the file floor\.bin/ );
+
+	} );
+
+	it( 'layout JSON: a UTF-8 byte-order mark is accepted; the NaN/Infinity hint appears only when the text has NaN or Infinity', () => {
+
+		const withBOM = writeLayout( dir, 'bom.json', '\uFEFF' + JSON.stringify( ROOM_PROBES ) );
+		expect( readFileSync( withBOM )[ 0 ] ).toBe( 0xEF );
+		expect( readLayout( withBOM ).positions.length ).toBe( ROOM_PROBES.positions.length );
+		const empty = writeLayout( dir, 'empty.json', '' );
+		expect( () => readLayout( empty ) ).toThrow( /empty\.json is not valid JSON \([^)]*\)\.$/ );
+		const nanText = writeLayout( dir, 'nan-hint.json', '{ "positions": [ 0, 0, Infinity ] }' );
+		expect( () => readLayout( nanText ) ).toThrow( /nan-hint\.json is not valid JSON \(.*\); NaN and Infinity cannot be written in JSON\.$/ );
 
 	} );
 
@@ -221,6 +235,16 @@ describe( 'capture-lighting inspect (volumes written by the codec, no browser)',
 		const jsonRun = runCli( [ 'inspect', badJSON ] );
 		expect( jsonRun.stderr ).toMatch( /bad\.json is not a valid baked volume: bakedVolumeFromJSON: / );
 		expect( jsonRun.code ).toBe( 1 );
+
+		// A file of 2 GiB or more cannot be read into one Node buffer: one line, exit 1 (a sparse
+		// file, so the test writes no data).
+		const huge = join( dir, 'huge.bin' );
+		writeFileSync( huge, '' );
+		truncateSync( huge, 2 ** 31 + 16 );
+		const hugeRun = runCli( [ 'inspect', huge ] );
+		expect( hugeRun.stderr ).toMatch( /^capture-lighting: .*huge\.bin is not a valid baked volume: it has 2147483664 bytes, more than the 2 GiB a volume file can have\.\n$/ );
+		expect( hugeRun.code ).toBe( 1 );
+		rmSync( huge );
 
 		const missing = runCli( [ 'inspect', join( dir, 'missing.bin' ) ] );
 		expect( missing.stderr ).toMatch( /^capture-lighting: volume .*missing\.bin not found/ );
