@@ -84,6 +84,18 @@ export async function bake( options: BakeOptions, log: ( text: string ) => void 
 	} );
 	bar.finish();
 
+	if ( result.info.triangles === 0 && options.sky === null ) {
+
+		throw new CliError( `scene ${options.scene} has no triangles (${result.info.meshes} meshes) and no --sky is given: nothing to capture; expected a glTF/GLB or OBJ file with geometry.` );
+
+	}
+
+	if ( result.info.nonFiniteVertices > 0 ) {
+
+		throw new CliError( `scene ${options.scene} has ${result.info.nonFiniteVertices} vertices with a NaN or infinite coordinate; every vertex position must be finite.` );
+
+	}
+
 	const bytes = Buffer.from( result.sh, 'base64' );
 	const sh = new Float32Array( bytes.buffer.slice( bytes.byteOffset, bytes.byteOffset + bytes.byteLength ) );
 	if ( sh.length !== 27 * count ) throw new CliError( `the page returned ${sh.length} SH floats for ${count} probes.`, 1 );

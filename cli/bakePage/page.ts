@@ -76,7 +76,7 @@ const api: BakePageApi = {
 
 		// Every light casts shadows and every mesh casts and receives them: a capture must not see
 		// light through walls. The scene is static, so the shadow maps are drawn once.
-		let lights = 0, meshes = 0, triangles = 0, shadows = false;
+		let lights = 0, meshes = 0, triangles = 0, nonFiniteVertices = 0, shadows = false;
 		scene.updateMatrixWorld( true );
 		scene.traverse( ( object ) => {
 
@@ -87,6 +87,16 @@ const api: BakePageApi = {
 				mesh.castShadow = mesh.receiveShadow = true;
 				const geometry = mesh.geometry;
 				triangles += ( geometry.index ? geometry.index.count : geometry.getAttribute( 'position' )?.count ?? 0 ) / 3;
+				const position = geometry.getAttribute( 'position' );
+				if ( position ) {
+
+					for ( let i = 0; i < position.count; i ++ ) {
+
+						if ( ! Number.isFinite( position.getX( i ) + position.getY( i ) + position.getZ( i ) ) ) nonFiniteVertices ++;
+
+					}
+
+				}
 
 			}
 
@@ -108,6 +118,20 @@ const api: BakePageApi = {
 		renderer.shadowMap.needsUpdate = true;
 		const loadMs = performance.now() - loadStart;
 		progress( 'loading', 1, 1 );
+		const gl = renderer.getContext();
+		const debug = gl.getExtension( 'WEBGL_debug_renderer_info' );
+		const info = {
+			renderer: debug ? String( gl.getParameter( debug.UNMASKED_RENDERER_WEBGL ) ) : String( gl.getParameter( gl.RENDERER ) ),
+			meshes, triangles: Math.round( triangles ), lights, shadows, nonFiniteVertices,
+		};
+		// Nothing to capture (no geometry and no sky), or geometry no capture can render: the CLI
+		// reports it as bad input. A sky alone is a valid bake (an outdoor probe set).
+		if ( ( info.triangles === 0 && ! request.sky ) || nonFiniteVertices > 0 ) {
+
+			renderer.dispose();
+			return { sh: '', captureMs: 0, loadMs, info };
+
+		}
 
 		const count = request.positions.length / 3;
 		const capturer = new ProbeCapturer( renderer, {
@@ -137,12 +161,6 @@ const api: BakePageApi = {
 		}
 
 		const captureMs = performance.now() - captureStart;
-		const gl = renderer.getContext();
-		const debug = gl.getExtension( 'WEBGL_debug_renderer_info' );
-		const info = {
-			renderer: debug ? String( gl.getParameter( debug.UNMASKED_RENDERER_WEBGL ) ) : String( gl.getParameter( gl.RENDERER ) ),
-			meshes, triangles: Math.round( triangles ), lights, shadows,
-		};
 		renderer.dispose();
 		return { sh: toBase64( target ), captureMs, loadMs, info };
 

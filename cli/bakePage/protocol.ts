@@ -44,8 +44,12 @@ export interface BakeResult {
 	/** Time to load the scene, in ms. */
 	loadMs: number;
 
-	/** Facts for the summary. */
-	info: { renderer: string; meshes: number; triangles: number; lights: number; shadows: boolean };
+	/**
+	 * Facts for the summary. `nonFiniteVertices` counts vertex positions with a NaN or infinite
+	 * coordinate; when it is not 0, or the scene has no triangles and no sky, the page skips the capture
+	 * (`sh` is empty) and the CLI reports bad input.
+	 */
+	info: { renderer: string; meshes: number; triangles: number; lights: number; shadows: boolean; nonFiniteVertices: number };
 
 }
 

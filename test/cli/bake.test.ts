@@ -155,6 +155,29 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake (headless Chromium)
 
 	} );
 
+	it( 'an OBJ of binary garbage (no triangles) or with a NaN vertex is bad input: exit 2, one line naming the file, no output', () => {
+
+		const layout = writeLayout( dir, 'garbage-probes.json', { positions: [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 ] } );
+		const garbage = join( dir, 'garbage.obj' );
+		writeFileSync( garbage, Buffer.from( Array.from( { length: 4096 }, ( _, i ) => ( i * 7919 + 13 ) % 256 ) ) );
+		const nanVertex = join( dir, 'nan-vertex.obj' );
+		writeFileSync( nanVertex, 'v 0 0 0\nv 1 0 0\nv 0 NaN 1\nf 1 2 3\n' );
+		for ( const [ scene, message ] of [
+			[ garbage, /^capture-lighting: scene .*garbage\.obj has no triangles \(0 meshes\) and no --sky is given/ ],
+			[ nanVertex, /^capture-lighting: scene .*nan-vertex\.obj has 1 vertices with a NaN or infinite coordinate/ ],
+		] as const ) {
+
+			const out = join( dir, 'garbage.bin' );
+			const run = runCli( [ 'bake', scene, '--probes', layout, '--out', out, '--resolution', '8', '--quiet' ], ENV );
+			expect( run.stderr ).toMatch( message );
+			expect( run.stderr.trim().split( '\n' ) ).toHaveLength( 1 );
+			expect( run.code ).toBe( 2 );
+			expect( existsSync( out ) ).toBe( false );
+
+		}
+
+	} );
+
 	it( 'a scene the browser cannot load exits 1 with the loader\'s message', () => {
 
 		const broken = join( dir, 'broken.glb' );
