@@ -5,7 +5,7 @@ import { closestPointOnTriangle } from '../geometry/closestPointOnTriangle.js';
 import { exactBarycentric } from './exactBarycentric.js';
 import { walkExactly } from './exactWalk.js';
 import type { OuterCells } from './OuterCells.js';
-import { buildMeshParts, storedTetrahedralization, type TetrahedralMeshParts } from './tetrahedralMeshParts.js';
+import { buildMeshParts, storedDuplicates, storedTetrahedralization, type TetrahedralMeshParts } from './tetrahedralMeshParts.js';
 import type { ProbeInterpolator } from './ProbeInterpolator.js';
 
 /**
@@ -198,7 +198,7 @@ export class TetrahedralMesh implements ProbeInterpolator {
 		const p = Float64Array.from( positions );
 		const { tetrahedra: tets, neighbors: adjacent } =
 			storedTetrahedralization( FROM, p, tetrahedra, neighbors, options.trusted === true );
-		const duplicates = options.duplicates ? Uint32Array.from( options.duplicates ) : new Uint32Array( 0 );
+		const duplicates = storedDuplicates( FROM, options.duplicates, p.length / 3 );
 		return new TetrahedralMesh( p, { outside: options.outside }, buildMeshParts( FROM, p, tets, adjacent, duplicates ) );
 
 	}
@@ -304,9 +304,11 @@ export class TetrahedralMesh implements ProbeInterpolator {
 	 * Writes the barycentric coordinates of (x, y, z) in tetrahedron t: `out[k]` is the weight of
 	 * probe `tetrahedra[4t + k]`. Negative entries mean the point is outside t. From the inverse
 	 * matrix, or from exact sub-volumes where it is ill-conditioned.
+	 * @throws RangeError when t is not a tetrahedron index.
 	 */
 	barycentric<T extends Float32Array | Float64Array | number[]>( t: number, x: number, y: number, z: number, out: T ): T {
 
+		if ( t >>> 0 !== t || 4 * t >= this.tetrahedra.length ) throw new RangeError( `TetrahedralMesh.barycentric: t = ${t} is not a tetrahedron index (0..${this.tetrahedra.length / 4 - 1}).` );
 		const m = this.inverseMatrices, k = 9 * t;
 		// The NaN sentinel of an ill-conditioned tetrahedron (see inverseMatrices).
 		if ( m[ k ] !== m[ k ] ) {

@@ -99,3 +99,33 @@ export function storedTetrahedralization(
 	}
 
 }
+
+/**
+ * The `duplicates` option of fromTetrahedralization: pairs (merged probe, probe it was merged
+ * into) of probe indices, or none.
+ * @throws TypeError / RangeError naming `where` for anything else.
+ */
+export function storedDuplicates( where: string, duplicates: unknown, probeCount: number ): Uint32Array {
+
+	if ( duplicates === undefined || duplicates === null ) return new Uint32Array( 0 );
+	const list = duplicates as ArrayLike<unknown>;
+	if ( typeof duplicates !== 'object' || typeof list.length !== 'number' || list.length % 2 !== 0 ) {
+
+		throw new TypeError( `${where}: options.duplicates must be pairs (merged probe, probe it was merged into) of probe indices, got ${typeof duplicates}.` );
+
+	}
+
+	for ( let i = 0; i < list.length; i ++ ) {
+
+		const v = list[ i ];
+		if ( typeof v !== 'number' || v >>> 0 !== v || v >= probeCount ) {
+
+			throw new RangeError( `${where}: options.duplicates[${i}] = ${String( v )} is not a probe index (0..${probeCount - 1}).` );
+
+		}
+
+	}
+
+	return Uint32Array.from( list as ArrayLike<number> );
+
+}

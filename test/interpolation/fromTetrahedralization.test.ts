@@ -173,4 +173,27 @@ describe( 'TetrahedralMesh.fromTetrahedralization', () => {
 
 	} );
 
+	it( 'misuse named (issue 12): a garbage duplicates option, and barycentric() of a tetrahedron index out of range, instead of NaN', () => {
+
+		const positions = [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1 ];
+		const mesh = new TetrahedralMesh( positions );
+		const load = ( duplicates: unknown ) => () => TetrahedralMesh.fromTetrahedralization(
+			positions, mesh.tetrahedra, mesh.neighbors, { duplicates: duplicates as number[] } );
+		expect( load( 'garbage' ) ).toThrow( /fromTetrahedralization: options\.duplicates must be pairs/ );
+		expect( load( [ 1 ] ) ).toThrow( /options\.duplicates must be pairs/ );
+		expect( load( [ 1, 7 ] ) ).toThrow( /options\.duplicates\[1\] = 7 is not a probe index \(0\.\.4\)/ );
+		expect( load( [ 1, - 1 ] ) ).toThrow( RangeError );
+		expect( Array.from( TetrahedralMesh.fromTetrahedralization( positions, mesh.tetrahedra, mesh.neighbors, { duplicates: [ 4, 0 ] } ).duplicates ) ).toEqual( [ 4, 0 ] );
+		const out = new Float64Array( 4 );
+		for ( const t of [ - 1, 1.5, mesh.cellCount, NaN ] ) {
+
+			expect( () => mesh.barycentric( t, 0.1, 0.1, 0.1, out ), String( t ) ).toThrow( /TetrahedralMesh\.barycentric: t = .* is not a tetrahedron index/ );
+
+		}
+
+		mesh.barycentric( 0, 0.1, 0.1, 0.1, out );
+		expect( out.every( Number.isFinite ) ).toBe( true );
+
+	} );
+
 } );
