@@ -71,6 +71,10 @@ export function orient( p: Float64Array, a: number, b: number, c: number, d: num
 	const bound = O3D_BOUND_A * permanent + O3D_UNDERFLOW;
 	if ( det > bound || - det > bound ) return det > 0 ? - 1 : 1;
 
+	// Four points with one coordinate in common lie in an axis-aligned plane (grids, mostly): exactly 0.
+	if ( ( az === bz && bz === cz && cz === dz ) || ( ax === bx && bx === cx && cx === dx ) ) return 0;
+	if ( ay === by && by === cy && cy === dy ) return 0;
+
 	// The library's expansion arithmetic is exact unless a tiny coordinate makes a product underflow.
 	if ( outsideWindow( ax ) || outsideWindow( ay ) || outsideWindow( az ) || outsideWindow( bx ) || outsideWindow( by ) ||
 		outsideWindow( bz ) || outsideWindow( cx ) || outsideWindow( cy ) || outsideWindow( cz ) || outsideWindow( dx ) ||
