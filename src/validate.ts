@@ -16,7 +16,7 @@ export function assertArrayLike( where: string, name: string, value: unknown ): 
 
 	if ( value === null || value === undefined || typeof value !== 'object' || typeof ( value as ArrayLike<number> ).length !== 'number' ) {
 
-		throw new TypeError( `${where}: ${name} must be an array or typed array of numbers, got ${describe( value )}.` );
+		throw new TypeError( `${where}: ${name} must be an array or typed array of numbers, got ${describeValue( value )}.` );
 
 	}
 
@@ -99,7 +99,7 @@ export function assertNumber( where: string, name: string, value: unknown ): ass
 
 	if ( typeof value !== 'number' || ! Number.isFinite( value ) ) {
 
-		throw new RangeError( `${where}: ${name} must be a finite number, got ${describe( value )}.` );
+		throw new RangeError( `${where}: ${name} must be a finite number, got ${describeValue( value )}.` );
 
 	}
 
@@ -115,7 +115,7 @@ export function assertInteger(
 	if ( typeof value !== 'number' || ! Number.isInteger( value ) || value < min || value > max ) {
 
 		const range = max === Number.MAX_SAFE_INTEGER ? `≥ ${min}` : `in ${min}..${max}`;
-		throw new RangeError( `${where}: ${name} must be an integer ${range}, got ${describe( value )}.` );
+		throw new RangeError( `${where}: ${name} must be an integer ${range}, got ${describeValue( value )}.` );
 
 	}
 
@@ -128,7 +128,7 @@ export function assertCoordinates( where: string, x: unknown, y: unknown, z: unk
 
 	if ( Number.isFinite( x ) && Number.isFinite( y ) && Number.isFinite( z ) ) return;
 	const [ name, value ] = ! Number.isFinite( x ) ? [ 'x', x ] : ! Number.isFinite( y ) ? [ 'y', y ] : [ 'z', z ];
-	throw new RangeError( `${where}: ${name} is ${typeof value === 'number' ? value : describe( value )}; coordinates must be finite numbers.` );
+	throw new RangeError( `${where}: ${name} is ${typeof value === 'number' ? value : describeValue( value )}; coordinates must be finite numbers.` );
 
 }
 
@@ -225,7 +225,7 @@ export function assertProbePositions( where: string, name: string, value: unknow
 export function assertOptionalNumber( where: string, name: string, value: unknown, min = - Infinity ): void {
 
 	if ( value === undefined || ( typeof value === 'number' && Number.isFinite( value ) && value >= min ) ) return;
-	const message = `${where}: ${name} must be a finite number${min === - Infinity ? '' : ` ≥ ${min}`}, got ${describe( value )}.`;
+	const message = `${where}: ${name} must be a finite number${min === - Infinity ? '' : ` ≥ ${min}`}, got ${describeValue( value )}.`;
 	throw typeof value === 'number' ? new RangeError( message ) : new TypeError( message );
 
 }
@@ -237,7 +237,7 @@ export function assertOptionalBoolean( where: string, name: string, value: unkno
 
 	if ( value !== undefined && typeof value !== 'boolean' ) {
 
-		throw new TypeError( `${where}: ${name} must be true or false, got ${describe( value )}.` );
+		throw new TypeError( `${where}: ${name} must be true or false, got ${describeValue( value )}.` );
 
 	}
 
@@ -250,7 +250,7 @@ export function assertOptionalFunction( where: string, name: string, value: unkn
 
 	if ( value !== undefined && typeof value !== 'function' ) {
 
-		throw new TypeError( `${where}: ${name} must be a function, got ${describe( value )}.` );
+		throw new TypeError( `${where}: ${name} must be a function, got ${describeValue( value )}.` );
 
 	}
 
@@ -263,7 +263,7 @@ export function assertOptions( where: string, name: string, value: unknown ): vo
 
 	if ( value !== undefined && ( value === null || typeof value !== 'object' || Array.isArray( value ) ) ) {
 
-		throw new TypeError( `${where}: ${name} must be an object, got ${describe( value )}.` );
+		throw new TypeError( `${where}: ${name} must be an object, got ${describeValue( value )}.` );
 
 	}
 
@@ -281,12 +281,6 @@ export function isStorableText( text: string ): boolean {
 
 /** A short description of a value for messages: `null`, `an array of length 3`, `the string "…"`, `a Float32Array`, `number 2`. */
 export function describeValue( value: unknown ): string {
-
-	return describe( value );
-
-}
-
-function describe( value: unknown ): string {
 
 	if ( value === null ) return 'null';
 	if ( Array.isArray( value ) ) return `an array of length ${value.length}`;
