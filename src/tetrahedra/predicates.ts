@@ -70,6 +70,17 @@ export function orient( p: Float64Array, a: number, b: number, c: number, d: num
 		( Math.abs( adxbdy ) + Math.abs( bdxady ) ) * Math.abs( cdz );
 	const bound = O3D_BOUND_A * permanent + O3D_UNDERFLOW;
 	if ( det > bound || - det > bound ) return det > 0 ? - 1 : 1;
+	return orientNearZero( p, a3, b3, c3, d3 );
+
+}
+
+/** orient beyond its first stage (kept out of line so that the hot first stage stays small enough to inline). */
+function orientNearZero( p: Float64Array, a3: number, b3: number, c3: number, d3: number ): number {
+
+	const ax = p[ a3 ], ay = p[ a3 + 1 ], az = p[ a3 + 2 ];
+	const bx = p[ b3 ], by = p[ b3 + 1 ], bz = p[ b3 + 2 ];
+	const cx = p[ c3 ], cy = p[ c3 + 1 ], cz = p[ c3 + 2 ];
+	const dx = p[ d3 ], dy = p[ d3 + 1 ], dz = p[ d3 + 2 ];
 
 	// Four points with one coordinate in common lie in an axis-aligned plane (grids, mostly): exactly 0.
 	if ( ( az === bz && bz === cz && cz === dz ) || ( ax === bx && bx === cx && cx === dx ) ) return 0;
@@ -78,7 +89,7 @@ export function orient( p: Float64Array, a: number, b: number, c: number, d: num
 	// The library's expansion arithmetic is exact unless a tiny coordinate makes a product underflow.
 	if ( outsideWindow( ax ) || outsideWindow( ay ) || outsideWindow( az ) || outsideWindow( bx ) || outsideWindow( by ) ||
 		outsideWindow( bz ) || outsideWindow( cx ) || outsideWindow( cy ) || outsideWindow( cz ) || outsideWindow( dx ) ||
-		outsideWindow( dy ) || outsideWindow( dz ) ) return - orient3dSign( p, a, b, c, d );
+		outsideWindow( dy ) || outsideWindow( dz ) ) return - orient3dSign( p, a3 / 3, b3 / 3, c3 / 3, d3 / 3 );
 	const o = orient3d( ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz );
 	return o > 0 ? - 1 : ( o < 0 ? 1 : 0 );
 

@@ -14,17 +14,18 @@ export interface TetrahedralizeOptions {
 
 	/**
 	 * Points closer than this fraction of the bounding-box diagonal are merged into one; the merged
-	 * ones are reported in `duplicates`. Default 1e-9.
+	 * ones are reported in `duplicates`. A finite number ≥ 0 (0: only exact duplicates). Default 1e-9.
 	 */
 	duplicateTolerance?: number;
 
 	/**
 	 * When every point lies within this fraction of the bounding-box diagonal of one plane, the set
-	 * is rejected as coplanar (a {@link DegenerateInputError} with `reason: 'coplanar'`). Default 1e-9.
+	 * is rejected as coplanar (a {@link DegenerateInputError} with `reason: 'coplanar'`). A finite
+	 * number ≥ 0 (0: only exactly coplanar sets). Default 1e-9.
 	 */
 	planarTolerance?: number;
 
-	/** Seed of the randomized insertion order; the output does not depend on it. Default 1. */
+	/** Seed of the randomized insertion order (a finite number); the output does not depend on it. Default 1. */
 	seed?: number;
 
 }

@@ -270,6 +270,8 @@ function dynamicCase( script: string, s: number ): CaseResult {
 	if ( script === 'far' ) {
 
 		const huge = Math.min( 1e20 * s, 1e300 );
+		move( 'move to 1e17 (within the local frame)', 7, 0.5 * s, 1e17 * s, 0.5 * s );
+		move( 'move back from 1e17', 7, 0.5 * s, 0.5 * s, 0.75 * s );
 		insert( 'insert far', huge, 0.5 * s, 0.5 * s );
 		move( 'move far (negative)', 3, - huge, 0.2 * s, 0.9 * s );
 		insert( 'insert 1e100 further', 0.5 * s, Math.min( 1e100 * s, 1e300 ), 0.1 * s );
