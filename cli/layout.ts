@@ -14,12 +14,15 @@ export interface CliLayout {
 	roles: ProbeRole[];
 	/** Named groups of probes, passed to the volume as they are (the codec checks them). */
 	zones: { name: string; probes: number[]; bounds?: number[] }[];
+	/** The layout's "lights" value as written (unchecked here; cli/layoutLights.ts parses it), or undefined. */
+	lights?: unknown;
 
 }
 
 /**
- * Reads and validates a probe layout file: `{ name?, positions: number[], names?: string[], roles?: string[], zones?: [...] }`.
- * Names default to '' (none), roles to "fill".
+ * Reads and validates a probe layout file:
+ * `{ name?, positions: number[], names?: string[], roles?: string[], zones?: [...], lights?: [...] }`.
+ * Names default to '' (none), roles to "fill"; `lights` is passed through unchecked.
  * @param file Path of the JSON file (named in every message).
  * @throws {CliError} exit code 2: missing or unreadable file, bad JSON, a coordinate that is not a
  * finite number (naming the probe and axis), fewer than 4 probes, names/roles of the wrong length,
@@ -80,7 +83,11 @@ export function readLayout( file: string ): CliLayout {
 	if ( ! Array.isArray( zones ) ) throw new CliError( `probe layout ${file}: "zones" must be an array of { name, probes, bounds? }.` );
 
 	const name = typeof layout.name === 'string' ? layout.name : '';
-	return { name, positions: Float64Array.from( raw as number[] ), names: names as string[], roles: roles as ProbeRole[], zones };
+	const result: CliLayout = {
+		name, positions: Float64Array.from( raw as number[] ), names: names as string[], roles: roles as ProbeRole[], zones,
+	};
+	if ( layout.lights !== undefined ) result.lights = layout.lights;
+	return result;
 
 }
 

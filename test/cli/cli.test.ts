@@ -123,6 +123,15 @@ describe( 'capture-lighting bake: bad input exits 2 before a browser starts', ()
 
 	} );
 
+	it( 'layout: "lights" is passed through as written (cli/layoutLights.ts checks it); absent, it stays undefined', () => {
+
+		const lights = [ { type: 'point', position: [ 0, 2, 0 ], color: '#ffffff', intensity: 5 }, 'not checked here' ];
+		expect( readLayout( writeLayout( dir, 'lights.json', { ...ROOM_PROBES, lights } ) ).lights ).toEqual( lights );
+		expect( readLayout( writeLayout( dir, 'lights-odd.json', { ...ROOM_PROBES, lights: 7 } ) ).lights ).toBe( 7 );
+		expect( readLayout( layout ) ).not.toHaveProperty( 'lights' );
+
+	} );
+
 	it( 'layout: missing, NaN (null in JSON), literal NaN, < 4 probes, coplanar, duplicates (named or not), a bad zone, unknown role, names of the wrong length', () => {
 
 		const out = join( dir, 'v.bin' );
@@ -231,7 +240,8 @@ describe( 'capture-lighting inspect (volumes written by the codec, no browser)',
 		}
 
 		const badJSON = join( dir, 'bad.json' );
-		writeFileSync( badJSON, JSON.stringify( { ...bakedVolumeToJSON( volume() ), tetrahedra: [ 0, 0, 0, 0 ], tetrahedronCount: 1, neighbors: [ - 1, - 1, - 1, - 1 ] } ) );
+		const badTetrahedra = { tetrahedra: [ 0, 0, 0, 0 ], tetrahedronCount: 1, neighbors: [ - 1, - 1, - 1, - 1 ] };
+		writeFileSync( badJSON, JSON.stringify( { ...bakedVolumeToJSON( volume() ), ...badTetrahedra } ) );
 		const jsonRun = runCli( [ 'inspect', badJSON ] );
 		expect( jsonRun.stderr ).toMatch( /bad\.json is not a valid baked volume: bakedVolumeFromJSON: / );
 		expect( jsonRun.code ).toBe( 1 );
