@@ -3,6 +3,7 @@ import {
 	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
+import { ShadowMapFreeze } from './ShadowMapFreeze.js';
 import { assertRenderer, assertScene, checkCaptureCall, checkCaptureSettings } from './captureSettings.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../validate.js';
@@ -76,6 +77,7 @@ export class ProbeCapturer {
 	readonly projector: SHProjector;
 
 	private readonly solidAngle: CubeSolidAngleMode;
+	private readonly shadowMaps: ShadowMapFreeze;
 	private busy = false;
 
 	/**
@@ -95,11 +97,14 @@ export class ProbeCapturer {
 		} );
 		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
 		this.projector = new SHProjector( renderer );
+		this.shadowMaps = new ShadowMapFreeze( renderer );
 
 	}
 
 	/**
-	 * Captures the scene at each position and writes 27 SH floats per probe into `target`.
+	 * Captures the scene at each position and writes 27 SH floats per probe into `target`. With
+	 * `renderer.shadowMap.enabled`, the shadow maps are drawn once per call (at its first cube face)
+	 * and reused for every face, and `shadowMap.autoUpdate` / `needsUpdate` are restored afterwards.
 	 * @param positions Flat x, y, z per probe.
 	 * @param target Receives 27 floats per probe, from `offset`.
 	 * @returns `target`, once every probe is done.
@@ -126,7 +131,7 @@ export class ProbeCapturer {
 		// One render target and one projection batch serve every call: overlapping captures would
 		// interleave their probes.
 		if ( this.busy ) throw new Error( 'ProbeCapturer.capture: a capture is already running on this capturer; await it first (or use a second ProbeCapturer).' );
-		const { renderer, cubeCamera, projector } = this;
+		const { renderer, cubeCamera, projector, shadowMaps } = this;
 		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
 		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
 		const autoClear = renderer.autoClear;
@@ -140,6 +145,7 @@ export class ProbeCapturer {
 
 		try {
 
+			shadowMaps.begin();
 			hidden = this.hide( scene, options );
 
 			scene.updateMatrixWorld();
@@ -163,7 +169,9 @@ export class ProbeCapturer {
 
 						renderer.autoClear = autoClear;
 						show( hidden );
+						shadowMaps.pause();
 						await nextTask();
+						shadowMaps.resume();
 						hidden = this.hide( scene, options );
 						lastYield = now();
 
@@ -178,6 +186,7 @@ export class ProbeCapturer {
 
 		} finally {
 
+			shadowMaps.end();
 			renderer.autoClear = autoClear;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
 			show( hidden );
