@@ -4,7 +4,7 @@ import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { BakedCapture, BakedCaptureSettings, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
 import { PROBE_ROLES, type ProbeRole } from '../roles.js';
-import { SH_FLOATS } from '../validate.js';
+import { SH_FLOATS, assertOptions, describeValue } from '../validate.js';
 import type { LightProbeVolumeCaptureOptions, LightProbeVolumeParameters } from './LightProbeVolumeOptions.js';
 import type { BoxLike, ProbeZones } from './ProbeZones.js';
 
@@ -32,6 +32,36 @@ export interface BakedSource {
 /** The constructor parameters a baked file gives. */
 export type BakedParameters = Required<Pick<LightProbeVolumeParameters, 'positions' | 'sh' | 'names' | 'roles'>>
 	& Pick<LightProbeVolumeParameters, 'zones' | 'interpolator'>;
+
+/** The constructor parameters that come from a baked file, so a caller may not pass them. */
+const FILE_PARAMETERS: readonly ( keyof BakedParameters )[] = [ 'positions', 'sh', 'names', 'roles', 'zones', 'interpolator' ];
+
+/**
+ * Constructor parameters of a volume loaded from a baked file besides those the file gives, e.g.
+ * `occluders` and `guard` (`LightProbeVolume.fromBakedData`, `LightProbeVolumeLoader`).
+ */
+export type BakedVolumeParameters = Omit<LightProbeVolumeParameters, keyof BakedParameters>;
+
+/**
+ * Checks the parameters given with a baked file: undefined or an object without the members the
+ * file gives (which would be silently replaced by the file's). Values are checked by the constructor.
+ */
+export function assertBakedVolumeParameters( where: string, parameters: unknown ): asserts parameters is BakedVolumeParameters | undefined {
+
+	assertOptions( where, 'parameters', parameters );
+	for ( const name of FILE_PARAMETERS ) {
+
+		const value = ( parameters as Record<string, unknown> | undefined )?.[ name ];
+		if ( value !== undefined ) {
+
+			throw new TypeError( `${where}: parameters.${name} (${describeValue( value )}) comes from the baked file; `
+				+ 'pass only the other constructor parameters, such as occluders and guard.' );
+
+		}
+
+	}
+
+}
 
 /**
  * `LightProbeVolume.toBakedData`: positions, SH, the tetrahedralization (when the interpolator is
