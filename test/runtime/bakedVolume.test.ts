@@ -2,12 +2,18 @@ import { describe, expect, it } from 'vitest';
 import { BakedVolumeError, LightProbeVolume } from '../../src/index.js';
 import { GridInterpolator, PlanarMesh, TetrahedralMesh, tetrahedralize } from '../../src/math.js';
 import { decodeBakedVolume } from '../../src/format.js';
+import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
+import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /*
- * LightProbeVolume ↔ baked files (the codec itself is tested in test/io): what a game loads must
- * light objects exactly as the volume that was baked, without re-tetrahedralizing.
+ * LightProbeVolume ↔ baked files through LightProbeVolumeExporter / LightProbeVolumeLoader (the
+ * codec itself is tested in test/io, the loader's forms and HTTP in LightProbeVolumeLoader.test.ts):
+ * what a game loads must light objects exactly as the volume that was baked, without re-tetrahedralizing.
  */
+
+const loader = new LightProbeVolumeLoader();
+const exporter = new LightProbeVolumeExporter();
 
 function randomVolume( count: number, seed: number ): LightProbeVolume {
 
@@ -49,7 +55,7 @@ describe( 'LightProbeVolume baked files', () => {
 	it( 'binary, float32: everything comes back, and objects are lit exactly as before', () => {
 
 		const volume = randomVolume( 60, 1 );
-		const loaded = LightProbeVolume.fromArrayBuffer( volume.toArrayBuffer() );
+		const loaded = loader.parse( exporter.parse( volume ) );
 		expect( Array.from( loaded.positions ) ).toEqual( Array.from( volume.positions ) );
 		expect( Array.from( loaded.sh ) ).toEqual( Array.from( volume.sh ) );
 		expect( loaded.names ).toEqual( volume.names );
@@ -66,24 +72,24 @@ describe( 'LightProbeVolume baked files', () => {
 	it( 'binary, float16: smaller, and the light within half precision', () => {
 
 		const volume = randomVolume( 60, 2 );
-		const f32 = volume.toArrayBuffer(), f16 = volume.toArrayBuffer( { precision: 'float16' } );
+		const f32 = exporter.parse( volume ), f16 = exporter.parse( volume, { precision: 'float16' } );
 		expect( f32.byteLength - f16.byteLength ).toBe( 60 * 27 * 2 );
-		samplesEqual( volume, LightProbeVolume.fromArrayBuffer( f16 ), 2 ** - 10 );
+		samplesEqual( volume, loader.parse( f16 ), 2 ** - 10 );
 
 	} );
 
 	it( 'JSON (object or text): the same volume', () => {
 
 		const volume = randomVolume( 30, 3 );
-		samplesEqual( volume, LightProbeVolume.fromJSON( volume.toJSON() ), 0 );
-		samplesEqual( volume, LightProbeVolume.fromJSON( JSON.stringify( volume ) ), 0 );
+		samplesEqual( volume, loader.parse( exporter.parse( volume, { binary: false } ) ), 0 );
+		samplesEqual( volume, loader.parse( JSON.stringify( exporter.parse( volume, { binary: false } ) ) ), 0 );
 
 	} );
 
 	it( 'uses the stored tetrahedralization as it is: a reordered one comes back reordered, not rebuilt', () => {
 
 		const volume = randomVolume( 40, 4 );
-		const data = decodeBakedVolume( volume.toArrayBuffer() );
+		const data = decodeBakedVolume( exporter.parse( volume ) );
 		// Reverse the tetrahedra and remap the neighbour links: the same mesh, in an order
 		// tetrahedralize() would not produce.
 		const n = data.tetrahedra.length / 4;
@@ -111,21 +117,21 @@ describe( 'LightProbeVolume baked files', () => {
 
 		const grid = new GridInterpolator( [ 0, 0, 0 ], [ 1, 1, 1 ], [ 3, 3, 3 ] );
 		const gridVolume = new LightProbeVolume( { positions: grid.positions, interpolator: grid } );
-		expect( decodeBakedVolume( gridVolume.toArrayBuffer() ).tetrahedra.length ).toBe( 0 );
-		expect( LightProbeVolume.fromArrayBuffer( gridVolume.toArrayBuffer() ).interpolator ).toBeInstanceOf( TetrahedralMesh );
+		expect( decodeBakedVolume( exporter.parse( gridVolume ) ).tetrahedra.length ).toBe( 0 );
+		expect( loader.parse( exporter.parse( gridVolume ) ).interpolator ).toBeInstanceOf( TetrahedralMesh );
 		const flat = new LightProbeVolume( { positions: [ 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1, 0.5, 0, 2 ] } );
-		expect( LightProbeVolume.fromArrayBuffer( flat.toArrayBuffer() ).interpolator ).toBeInstanceOf( PlanarMesh );
+		expect( loader.parse( exporter.parse( flat ) ).interpolator ).toBeInstanceOf( PlanarMesh );
 
 	} );
 
 	it( 'a damaged file gives a BakedVolumeError naming the problem, never a volume', () => {
 
-		const buffer = randomVolume( 20, 5 ).toArrayBuffer();
-		expect( () => LightProbeVolume.fromArrayBuffer( buffer.slice( 0, buffer.byteLength - 9 ) ) ).toThrow( BakedVolumeError );
+		const buffer = exporter.parse( randomVolume( 20, 5 ) );
+		expect( () => loader.parse( buffer.slice( 0, buffer.byteLength - 9 ) ) ).toThrow( BakedVolumeError );
 		const flipped = new Uint8Array( buffer.slice( 0 ) );
 		flipped[ 200 ] ^= 0x10;
-		expect( () => LightProbeVolume.fromArrayBuffer( flipped ) ).toThrow( /corrupt/i );
-		expect( () => LightProbeVolume.fromJSON( '{"format": "something else"}' ) ).toThrow( BakedVolumeError );
+		expect( () => loader.parse( flipped ) ).toThrow( /corrupt/i );
+		expect( () => loader.parse( '{"format": "something else"}' ) ).toThrow( BakedVolumeError );
 
 	} );
 
@@ -142,7 +148,7 @@ describe( 'LightProbeVolume baked files after incremental edits', () => {
 		plain.moveProbe( 10, [ 5, 5, 5 ] );
 		plain.removeProbe( 17 );
 		const added = plain.addProbe( [ 1, 2, 3 ], { name: 'new', sh: new Float32Array( 27 ).fill( 0.5 ) } );
-		const loaded = LightProbeVolume.fromArrayBuffer( plain.toArrayBuffer() );
+		const loaded = loader.parse( exporter.parse( plain ) );
 		expect( loaded.count ).toBe( 39 );
 		expect( loaded.names ).not.toContain( 'probe 3' );
 		expect( loaded.names ).not.toContain( 'probe 17' );

@@ -7,10 +7,15 @@
 import { describe, expect, it, vi } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
+import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
+import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import {
 	BakedVolumeError, bakedVolumeFromJSON, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume, type BakedVolumeInput,
 } from '../../src/io/index.js';
 import { fixChecksum, fourCC, makeVolume, readSections, writeSections } from '../io/helpers.js';
+
+const loader = new LightProbeVolumeLoader();
+const exporter = new LightProbeVolumeExporter();
 
 /** A 3 × 3 × 3 grid (27 probes) with SH = a linear field in L00 red and small values elsewhere. */
 function grid( scale = 1, offset = 0 ): { positions: Float64Array; sh: Float32Array } {
@@ -80,7 +85,7 @@ describe( 'values checked where they enter', () => {
 
 		} );
 		expectBaked( 'range', () => decodeBakedVolume( file ), /^decodeBakedVolume: sh\[0\] is -3\.\d+e\+38/ );
-		expectBaked( 'range', () => LightProbeVolume.fromArrayBuffer( file ), /^decodeBakedVolume: sh\[0\]/ );
+		expectBaked( 'range', () => loader.parse( file ), /^LightProbeVolumeLoader\.parse: sh\[0\] is -3\.\d+e\+38/ );
 		const volume = new LightProbeVolume( { positions, sh } );
 		expect( () => volume.addProbe( [ 0.5, 0.5, 0.5 ], { sh: new Float32Array( 27 ).fill( 2e30 ) } ) ).toThrow( /^LightProbeVolume\.addProbe: options\.sh\[0\] is 2\.?\d*e\+30/ );
 		// ±1e30 itself is accepted.
@@ -139,7 +144,7 @@ describe( 'values checked where they enter', () => {
 
 		// Inside the bound, values stay finite: a grid spanning 2e17.
 		const huge = grid( 1e17, - 1e17 );
-		const volume = LightProbeVolume.fromArrayBuffer( new LightProbeVolume( huge ).toArrayBuffer() );
+		const volume = loader.parse( exporter.parse( new LightProbeVolume( huge ) ) );
 		for ( const p of [ [ 0, 0, 0 ], [ 3e17, - 5e17, 1e18 ], [ - 1e18, 1e18, - 1e18 ] ] ) {
 
 			expect( Array.from( volume.sample( p ) ).every( Number.isFinite ), `sample( ${p} )` ).toBe( true );
@@ -167,7 +172,7 @@ describe( 'values checked where they enter', () => {
 
 	} );
 
-	it( 'names: [ 1, 2, 3, 4 ] is refused where it enters (the constructor, the encoder), not in toArrayBuffer', () => {
+	it( 'names: [ 1, 2, 3, 4 ] is refused where it enters (the constructor, the encoder), not in the exporter', () => {
 
 		const positions = [ 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 ];
 		expect( () => new LightProbeVolume( { positions, names: [ 1, 2, 3, 4 ] as never } ) ).toThrow( /^LightProbeVolume: names\[0\] is number 1; expected a string/ );
@@ -175,11 +180,11 @@ describe( 'values checked where they enter', () => {
 
 	} );
 
-	it( 'LightProbeVolume.fromJSON of malformed text: a BakedVolumeError "json", as bakedVolumeFromJSON gives, not a raw SyntaxError', () => {
+	it( 'LightProbeVolumeLoader.parse of malformed JSON text: a BakedVolumeError "json", as bakedVolumeFromJSON gives, not a raw SyntaxError', () => {
 
-		expectBaked( 'json', () => LightProbeVolume.fromJSON( '{"format": ' ), /^bakedVolumeFromJSON: not valid JSON/ );
-		const text = JSON.stringify( new LightProbeVolume( grid() ).toJSON() );
-		expect( LightProbeVolume.fromJSON( text ).count ).toBe( 27 );
+		expectBaked( 'json', () => loader.parse( '{"format": ' ), /^LightProbeVolumeLoader\.parse: not valid JSON/ );
+		const text = JSON.stringify( exporter.parse( new LightProbeVolume( grid() ), { binary: false } ) );
+		expect( loader.parse( text ).count ).toBe( 27 );
 
 	} );
 
@@ -204,7 +209,7 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 		const file = encodeBakedVolume( input );
 		expect( decodeBakedVolume( file ).zones.map( ( z ) => z.name ) ).toEqual( [ '', 'one', 'two' ] ); // what inspect reads
 		const text = JSON.stringify( bakedVolumeToJSON( input ) );
-		for ( const volume of [ LightProbeVolume.fromArrayBuffer( file ), LightProbeVolume.fromJSON( text ) ] ) {
+		for ( const volume of [ loader.parse( file ), loader.parse( text ) ] ) {
 
 			expect( volume.zones!.zones.map( ( z ) => z.name ) ).toEqual( [ '', 'one', 'two' ] );
 			expect( volume.sample( [ 0, 0, 0 ], new Float32Array( 27 ), { zone: '' } )[ 0 ] ).toBeCloseTo( 1, 6 );
@@ -228,7 +233,7 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 		const links = Int32Array.from( kept.flatMap( ( t ) => Array.from( neighbors.subarray( 4 * t, 4 * t + 4 ), renumber ) ) );
 		const file = encodeBakedVolume( { positions, sh, tetrahedra: tets, neighbors: links } ); // the codec accepts it
 		const warn = vi.spyOn( console, 'warn' ).mockImplementation( () => {} );
-		const volume = LightProbeVolume.fromArrayBuffer( file );
+		const volume = loader.parse( file );
 		expect( warn ).toHaveBeenCalledTimes( 1 );
 		expect( String( warn.mock.calls[ 0 ][ 0 ] ) ).toMatch( /^LightProbeVolume\.fromBakedData: the stored tetrahedra cannot be used .*rebuilt from the positions/ );
 		warn.mockRestore();
@@ -242,13 +247,13 @@ describe( 'one set of rules for the codec, inspect and the runtime', () => {
 		for ( const [ n, seed ] of [ [ 12, 2 ], [ 85, 3 ], [ 30, 5 ] ] ) {
 
 			const file = encodeBakedVolume( makeVolume( n, seed ) );
-			const volume = LightProbeVolume.fromArrayBuffer( file );
+			const volume = loader.parse( file );
 			expect( volume.count ).toBe( n );
 			// The same data back, but for the volume's bounds box, which the runtime does not keep (it writes the probes' box).
 			const plain = ( d: ReturnType<typeof decodeBakedVolume> ) => JSON.stringify(
 				{ ...d, bounds: null }, ( _, v ) => ArrayBuffer.isView( v ) ? Array.from( v as Float64Array ) : v,
 			);
-			expect( plain( decodeBakedVolume( volume.toArrayBuffer() ) ) ).toBe( plain( decodeBakedVolume( file ) ) );
+			expect( plain( decodeBakedVolume( exporter.parse( volume ) ) ) ).toBe( plain( decodeBakedVolume( file ) ) );
 
 		}
 

@@ -11,6 +11,8 @@
 import { describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
+import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
+import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { captureBounces } from '../../src/runtime/captureBounces.js';
 import { VisibilityGuard } from '../../src/runtime/VisibilityGuard.js';
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial } from '../../src/runtime/patchMaterial.js';
@@ -68,6 +70,8 @@ const panorama = Object.assign( new THREE.Texture(), { image: { width: 8, height
 const baked = () => ( { positions, sh } );
 const json = JSON.stringify( bakedVolumeToJSON( baked() ) );
 const writer = { processBuffer: () => 0, json: {}, byteOffset: 0, extensionsUsed: {} } as unknown as GLTFWriter;
+const loader = new LightProbeVolumeLoader();
+const exporter = new LightProbeVolumeExporter();
 
 /** What a failed call must leave unchanged. */
 function snapshot(): string {
@@ -170,18 +174,26 @@ const cases: Case[] = [
 	[ 'LightProbeVolume.removeProbe', () => volume.removeProbe( - 1 ) ],
 	[ 'LightProbeVolume.removeProbe', () => volume.removeProbe( 1.5 ) ],
 	// baked form
-	[ 'encodeBakedVolume', () => volume.toArrayBuffer( null as never ) ],
-	[ 'encodeBakedVolume', () => volume.toArrayBuffer( { precision: 'float8' as never } ) ],
-	[ 'LightProbeVolume.fromJSON', () => LightProbeVolume.fromJSON( json, 'params' as never ) ],
-	[ 'bakedVolumeFromJSON', () => LightProbeVolume.fromJSON( '{"format": ' ) ],
-	[ 'bakedVolumeFromJSON', () => LightProbeVolume.fromJSON( 5 ) ],
-	[ 'decodeBakedVolume', () => LightProbeVolume.fromArrayBuffer( 5 as never ) ],
-	[ 'decodeBakedVolume', () => LightProbeVolume.fromArrayBuffer( new ArrayBuffer( 10 ) ) ],
+	[ 'LightProbeVolumeExporter.parse', () => exporter.parse( volume, null as never ) ],
+	[ 'LightProbeVolumeExporter.parse', () => exporter.parse( volume, { precision: 'float8' as never } ) ],
+	[ 'LightProbeVolumeExporter.parse', () => exporter.parse( null as never ) ],
+	[ 'LightProbeVolumeExporter.parse', () => exporter.parse( volume, { binary: false, precision: 'float16' as never } ) ],
+	[ 'LightProbeVolumeExporter.parse', () => exporter.parseAsync( volume, { binary: 1 as never } ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( json, 'params' as never ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( json, { positions } as never ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( '{"format": ' ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( [ 5 ] as never ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( 5 as never ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( new ArrayBuffer( 10 ) ) ],
+	[ 'LightProbeVolumeLoader.parse', () => loader.parse( new TextEncoder().encode( '<!doctype html>' ) ) ],
+	[ 'LightProbeVolumeLoader.setParameters', () => loader.setParameters( 'x' as never ) ],
+	[ 'LightProbeVolumeLoader.load', () => loader.load( 5 as never, () => {} ) ],
+	[ 'LightProbeVolumeLoader.load', () => loader.loadAsync( 'volume.lpv', 'x' as never ) ],
 	[ 'LightProbeVolume.fromBakedData', () => LightProbeVolume.fromBakedData( null as never ) ],
 	[ 'LightProbeVolume.fromBakedData', () => LightProbeVolume.fromBakedData( { positions } as never ) ],
 	[ 'LightProbeVolume.fromBakedData', () => {
 
-		const data = decodeBakedVolume( volume.toArrayBuffer() );
+		const data = decodeBakedVolume( exporter.parse( volume ) );
 		data.tetrahedra[ 5 ] = 1000;
 		return LightProbeVolume.fromBakedData( data );
 
