@@ -3,8 +3,14 @@ import {
 	type BakedVolumeData, type BakedVolumeInput,
 } from '../src/io/index.js';
 
-/** What `bake` writes: the codec's input. */
-export type VolumeData = BakedVolumeInput;
+/**
+ * What `bake` writes: the codec's input, where null tetrahedra and neighbours (a planar or collinear
+ * layout, see `tetrahedralizeLayout`) mean a volume stored without them.
+ */
+export type VolumeData = Omit<BakedVolumeInput, 'tetrahedra' | 'neighbors'> & {
+	tetrahedra?: BakedVolumeInput[ 'tetrahedra' ] | null;
+	neighbors?: BakedVolumeInput[ 'neighbors' ] | null;
+};
 
 /** A decoded volume file. */
 export interface ReadVolume {
@@ -17,13 +23,18 @@ export interface ReadVolume {
 }
 
 /**
- * Encodes a volume in the binary or the JSON form of the baked-volume codec (src/io).
+ * Encodes a volume in the binary or the JSON form of the baked-volume codec (src/io); without
+ * tetrahedra when they are null or absent.
  * @throws {BakedVolumeError} from the codec (invalid data, float16 overflow).
  */
 export function encodeVolume( data: VolumeData, format: 'bin' | 'json', precision: 'float16' | 'float32' ): Uint8Array {
 
-	if ( format === 'json' ) return new TextEncoder().encode( JSON.stringify( bakedVolumeToJSON( data ) ) + '\n' );
-	return new Uint8Array( encodeBakedVolume( data, { precision } ) );
+	const { tetrahedra, neighbors, ...rest } = data;
+	const input: BakedVolumeInput = rest;
+	if ( tetrahedra != null ) input.tetrahedra = tetrahedra;
+	if ( neighbors != null ) input.neighbors = neighbors;
+	if ( format === 'json' ) return new TextEncoder().encode( JSON.stringify( bakedVolumeToJSON( input ) ) + '\n' );
+	return new Uint8Array( encodeBakedVolume( input, { precision } ) );
 
 }
 

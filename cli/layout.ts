@@ -2,6 +2,7 @@ import { existsSync, readFileSync, statSync } from 'node:fs';
 import { DegenerateInputError, tetrahedralize, type Tetrahedralization } from '../src/tetrahedra/tetrahedralize.js';
 import { BAKED_ROLES as ROLES, validateBakedVolume, type BakedProbeRole as ProbeRole } from '../src/io/index.js';
 import { CliError } from './errors.js';
+import { layoutShape, type LayoutShapeResult } from './layoutShape.js';
 
 const AXES = [ 'x', 'y', 'z' ];
 
@@ -64,7 +65,7 @@ export function readLayout( file: string ): CliLayout {
 
 	}
 
-	if ( count < 4 ) throw new CliError( `probe layout ${file} has ${count} probe${count === 1 ? '' : 's'}; a volume needs at least 4 (not all in one plane).` );
+	if ( count < 4 ) throw new CliError( `probe layout ${file} has ${count} probe${count === 1 ? '' : 's'}; a layout needs at least 4.` );
 
 	const names = optionalList( file, layout, 'names', count, () => '' );
 	names.forEach( ( name, i ) => {
@@ -104,57 +105,58 @@ function optionalList(
 }
 
 /**
- * Tetrahedralizes a validated layout; duplicate probes and layouts that span no volume are errors.
+ * Tetrahedralizes a validated layout, or returns null for one that spans no volume: probes in one
+ * plane or on one line are stored without tetrahedra, and `LightProbeVolume` interpolates them in
+ * their plane (`PlanarMesh`) or along their line, as it does for `new LightProbeVolume( { positions } )`.
  * @param file The layout's path, for the messages.
- * @throws {CliError} exit code 2: two probes at the same place (naming both), all probes in one
- * plane or on one line.
+ * @returns The tetrahedralization, or null for a planar or collinear layout.
+ * @throws {CliError} exit code 2: two probes at the same place (naming both; all probes at one
+ * place is that too), a coordinate float64 cannot hold beside the layout's extent.
  */
-export function tetrahedralizeLayout( file: string, layout: CliLayout ): Tetrahedralization {
+export function tetrahedralizeLayout( file: string, layout: CliLayout ): Tetrahedralization | null {
 
-	let result: Tetrahedralization;
+	const p = layout.positions;
+	let shape: LayoutShapeResult;
 	try {
 
-		result = tetrahedralize( layout.positions );
+		shape = layoutShape( p );
 
 	} catch ( error ) {
 
-		if ( error instanceof DegenerateInputError ) {
-
-			const what = error.reason === 'coplanar' ? 'all lie in one plane' : error.reason === 'collinear' ? 'all lie on one line' : error.reason === 'coincident' ? 'all coincide' : 'are too few distinct points';
-			throw new CliError( `probe layout ${file}: the ${layout.positions.length / 3} probes ${what}, so they span no volume (${error.message}). Add probes off that ${error.reason === 'coplanar' ? 'plane' : 'line'}.` );
-
-		}
-
+		if ( error instanceof DegenerateInputError ) throw new CliError( `probe layout ${file}: ${error.message}` );
 		throw error;
 
 	}
 
-	if ( result.duplicates.length > 0 ) {
+	const { duplicates } = shape;
+	if ( duplicates.length > 0 ) {
 
-		const a = result.duplicates[ 0 ], b = result.duplicates[ 1 ];
-		const p = layout.positions;
+		const a = duplicates[ 0 ], b = duplicates[ 1 ];
 		const label = ( i: number ) => layout.names[ i ] ? `probe ${i} ("${layout.names[ i ]}")` : `probe ${i}`;
-		throw new CliError( `probe layout ${file}: ${label( a )} and ${label( b )} are at the same position (${p[ 3 * b ]}, ${p[ 3 * b + 1 ]}, ${p[ 3 * b + 2 ]})${result.duplicates.length > 2 ? ` (and ${result.duplicates.length / 2 - 1} more duplicates)` : ''}; remove one.` );
+		const more = duplicates.length > 2 ? ` (and ${duplicates.length / 2 - 1} more duplicates)` : '';
+		throw new CliError( `probe layout ${file}: ${label( a )} and ${label( b )} are at the same position (${p[ 3 * b ]}, ${p[ 3 * b + 1 ]}, `
+			+ `${p[ 3 * b + 2 ]})${more}; remove one.` );
 
 	}
 
-	return result;
+	return shape.shape === 'volume' ? tetrahedralize( p ) : null;
 
 }
 
 /**
  * Runs the volume codec's own checks on everything but the SH (zeros here) before the capture, so a
  * layout the codec would reject (a bad zone, a name it cannot store) fails in milliseconds, not
- * after the bake.
+ * after the bake. A null tetrahedralization (a planar or collinear layout) is checked as a volume
+ * stored without tetrahedra.
  * @throws {CliError} exit code 2 with the codec's message.
  */
-export function checkVolumeInput( file: string, layout: CliLayout, tetrahedralization: Tetrahedralization ): void {
+export function checkVolumeInput( file: string, layout: CliLayout, tetrahedralization: Tetrahedralization | null ): void {
 
 	try {
 
 		validateBakedVolume( {
 			positions: layout.positions, sh: new Float32Array( 27 * layout.positions.length / 3 ),
-			tetrahedra: tetrahedralization.tetrahedra, neighbors: tetrahedralization.neighbors,
+			tetrahedra: tetrahedralization?.tetrahedra, neighbors: tetrahedralization?.neighbors,
 			names: layout.names, roles: layout.roles, zones: layout.zones,
 		}, 'capture-lighting' );
 

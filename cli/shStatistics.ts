@@ -124,11 +124,13 @@ export function formatShStatistics( stats: ShStatistics ): [ string, string ][] 
 	const { l00 } = stats;
 	const channels = [ 'R', 'G', 'B' ].map( ( name, c ) =>
 		`${name} ${formatValue( l00.min[ c ] )} / ${formatValue( l00.median[ c ] )} / ${formatValue( l00.max[ c ] )}` );
+	const share = stats.blackThreshold > BLACK_FLOOR ? `, 1/${Math.round( 1 / BLACK_FRACTION )} of the brightest` : '';
 	return [
 		[ 'L00 min/median/max', channels.join( ', ' ) ],
-		[ 'black probes', `${countOf( stats.black, stats.count )} (L00 ≤ ${formatValue( stats.blackThreshold )}${listProbes( stats.blackProbes )})` ],
-		[ 'negative irradiance', `${countOf( stats.negative, stats.count )} (lowest E(n) ${formatValue( stats.lowestIrradiance )} at probe `
-			+ `${stats.lowestProbe}${listProbes( stats.negativeProbes )})` ],
+		[ 'black probes', `${countOf( stats.black, stats.count )} (L00 ≤ ${formatValue( stats.blackThreshold )} in every channel${share}`
+			+ `${listProbes( stats.blackProbes )})` ],
+		[ 'negative irradiance', `${countOf( stats.negative, stats.count )} (E(n) below −1/${Math.round( 1 / NEGATIVE_FRACTION )} of the probe's mean for some `
+			+ `normal n; lowest ${formatValue( stats.lowestIrradiance )} at probe ${stats.lowestProbe}${listProbes( stats.negativeProbes )})` ],
 	];
 
 }

@@ -167,8 +167,8 @@ describe( 'shStatistics', () => {
 		const rows = formatShStatistics( shStatistics( shOf( [ { l00: [ 1, 2, 4 ] }, { l00: 0 }, { l00: 0.1, l10: 1 } ] ), 3 ) );
 		expect( rows ).toEqual( [
 			[ 'L00 min/median/max', 'R 0 / 0.1 / 1, G 0 / 0.1 / 2, B 0 / 0.1 / 4' ],
-			[ 'black probes', '1 of 3 (L00 ≤ 0.004; probe 1)' ],
-			[ 'negative irradiance', '1 of 3 (lowest E(n) -0.9347 at probe 2; probe 2)' ],
+			[ 'black probes', '1 of 3 (L00 ≤ 0.004 in every channel, 1/1000 of the brightest; probe 1)' ],
+			[ 'negative irradiance', '1 of 3 (E(n) below −1/256 of the probe\'s mean for some normal n; lowest -0.9347 at probe 2; probe 2)' ],
 		] );
 
 	} );
