@@ -1,0 +1,77 @@
+import { gzipSync } from 'node:zlib';
+import { readFileSync } from 'node:fs';
+import { resolve, sep } from 'node:path';
+import type { Rollup } from 'vite';
+import { libraryAliases } from '../../cli/libraryAliases.js';
+
+/** What a production Vite build of one entry module gives. */
+export interface ViteBundle {
+
+	/** The minified chunk. */
+	code: string;
+	/** Its size in bytes, and gzipped (zlib's default level, as Vite's build report). */
+	bytes: number;
+	gzipBytes: number;
+	/** The modules with code in the chunk (Rollup's renderedLength > 0), relative to the repository, '/'-separated. */
+	modules: string[];
+	/** The bare imports left in the chunk (the externals). */
+	imports: string[];
+
+}
+
+/** How the package's own modules are treated: by its package.json `sideEffects` claim (what a bundler does), or analysed by Rollup. */
+export type SideEffectsMode = 'package.json' | 'analysed';
+
+/**
+ * Bundles `code` as an app entry with Vite's build API (minified, tree-shaken, nothing written),
+ * `three-capture-lighting` and its subpaths resolved to the repository's `src/` by the same
+ * aliases as the examples. `three` is external unless `bundleThree`.
+ * @param root The repository.
+ */
+export async function viteBundle(
+	root: string, code: string, options: { bundleThree: boolean; sideEffects: SideEffectsMode },
+): Promise<ViteBundle> {
+
+	const { build } = await import( 'vite' );
+	const src = resolve( root, 'src' ) + sep;
+	const claim = JSON.parse( readFileSync( resolve( root, 'package.json' ), 'utf8' ) ).sideEffects;
+	// An installed package's modules get its package.json claim from the bundler; the aliased
+	// sources would not, so the claim is applied here by hand, or left out to let Rollup analyse them.
+	const moduleSideEffects = ( id: string ) => ! id.startsWith( src ) || ( options.sideEffects === 'analysed' ? true : claim !== false );
+	const entry = '\0bundle-entry';
+	const output = await build( {
+		configFile: false,
+		root,
+		logLevel: 'silent',
+		resolve: { alias: libraryAliases( root ) },
+		plugins: [ {
+			name: 'bundle-entry',
+			resolveId: ( id ) => ( id === 'bundle-entry' ? entry : null ),
+			load: ( id ) => ( id === entry ? code : null ),
+		} ],
+		build: {
+			write: false,
+			minify: 'esbuild',
+			reportCompressedSize: false,
+			rollupOptions: {
+				input: 'bundle-entry',
+				external: options.bundleThree ? [] : [ /^three($|\/)/ ],
+				treeshake: { moduleSideEffects },
+			},
+		},
+	} ) as Rollup.RollupOutput | Rollup.RollupOutput[];
+	const chunks = ( Array.isArray( output ) ? output : [ output ] ).flatMap( ( o ) => o.output ).filter( ( o ): o is Rollup.OutputChunk => o.type === 'chunk' );
+	if ( chunks.length !== 1 ) throw new Error( `viteBundle: expected one chunk, got ${chunks.length}` );
+	const [ chunk ] = chunks;
+	const modules = Object.entries( chunk.modules )
+		.filter( ( [ , module ] ) => module.renderedLength > 0 )
+		.map( ( [ id ] ) => ( id.startsWith( root ) ? id.slice( root.length ).replace( /^[\\/]/, '' ) : id ).split( sep ).join( '/' ) );
+	return {
+		code: chunk.code,
+		bytes: Buffer.byteLength( chunk.code ),
+		gzipBytes: gzipSync( chunk.code ).length,
+		modules,
+		imports: chunk.imports,
+	};
+
+}
