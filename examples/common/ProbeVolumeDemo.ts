@@ -2,6 +2,9 @@ import * as THREE from 'three';
 import type GUI from 'lil-gui';
 import { LightProbeVolume, VisibilityGuard, type CaptureBouncesOptions } from 'three-capture-lighting';
 import { GridInterpolator } from 'three-capture-lighting/math';
+// From 'three-capture-lighting' once the main entry exports them (issue 13).
+import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
+import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { withoutAmbientStandIns } from './ambientStandIns.js';
 import { download, fileName } from './download.js';
 import type { DynamicObjects } from './DynamicObjects.js';
@@ -226,7 +229,7 @@ export class ProbeVolumeDemo implements EditableVolume {
 		if ( ! response.ok ) throw new Error( `Baked volume not found: ${url} (HTTP ${response.status}).` );
 		const buffer = await response.arrayBuffer();
 		const start = performance.now();
-		const volume = LightProbeVolume.fromArrayBuffer( buffer );
+		const volume = new LightProbeVolumeLoader().parse( buffer );
 		report.loadMs = performance.now() - start;
 		const name = `baked: ${url.split( /[/?#]/ ).filter( Boolean ).pop()}`;
 		this.layouts.push( { name, positions: Array.from( volume.positions ), names: volume.names.slice(), roles: volume.roles.slice() } );
@@ -263,7 +266,7 @@ export class ProbeVolumeDemo implements EditableVolume {
 			// A baked file (float16 SH) of the volume, to load with `?volume=`.
 			exportBaked: () => {
 
-				const file = this.volume.toArrayBuffer( { precision: 'float16' } );
+				const file = new LightProbeVolumeExporter().parse( this.volume, { precision: 'float16' } );
 				download( fileName( this.layout.name, 'lpv' ), file, 'application/octet-stream' );
 
 			},

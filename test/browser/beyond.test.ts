@@ -136,7 +136,12 @@ describe.skipIf( browserSkipReason !== '' )( `demo toggles beyond the paper, in 
 
 		const captured = await openDemo( session, `examples/basic.html?${FIXED}&t=4` );
 		expect( captured.demo.error ).toBe( '' );
-		const bytes = await captured.page.evaluate( 'Array.from( new Uint8Array( window.__demoApp.activeVolume.toArrayBuffer( { precision: "float16" } ) ) )' ) as number[];
+		// The page's volume written by LightProbeVolumeExporter (from the dev server's sources), as the panel's "export baked volume" does.
+		const bytes = await captured.page.evaluate( `( async () => {
+			const { LightProbeVolumeExporter } = await import( '/src/runtime/LightProbeVolumeExporter.ts' );
+			const file = new LightProbeVolumeExporter().parse( window.__demoApp.activeVolume, { precision: 'float16' } );
+			return Array.from( new Uint8Array( file ) );
+		} )()` ) as number[];
 		const before = await shot( captured.page, 'basic-captured' );
 		await captured.page.close();
 		writeFileSync( 'test/output/beyond/basic.lpv', Uint8Array.from( bytes ) );
