@@ -13,10 +13,11 @@ interface WriterInternals {
 }
 
 /**
- * GLTFExporter plugin writing light probe volumes into the file (binary .glb or .gltf with a data URI).
+ * GLTFExporter plugin writing light probe volumes into the file (binary .glb or .gltf with a data URI),
+ * each as the baked binary file of docs/format.md.
  *
  * ```js
- * const volumes = [ { name: 'level', data } ];
+ * const volumes = [ { name: 'level', data: volume.toBakedData() } ];
  * exporter.register( ( writer ) => new GLTFLightProbeVolumeExporterPlugin( writer, volumes, { precision: 'float16' } ) );
  * const glb = await exporter.parseAsync( scene, { binary: true } );
  * ```
@@ -32,7 +33,7 @@ export class GLTFLightProbeVolumeExporterPlugin implements GLTFExporterPlugin {
 
 	/**
 	 * @param writer The GLTFWriter the exporter passes to `register`'s callback.
-	 * @param volumes The volumes to write (a bare volume is written with the name '').
+	 * @param volumes The volumes to write, each `volume.toBakedData()` (a bare one is written with the name '').
 	 * @param options Encoding options (SH precision), for every volume.
 	 */
 	constructor(

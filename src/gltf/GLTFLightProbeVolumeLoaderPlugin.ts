@@ -5,13 +5,14 @@ import { GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry } fro
 /**
  * GLTFLoader plugin reading the volumes written by {@link GLTFLightProbeVolumeExporterPlugin}
  * (or any writer following docs/format.md) into `gltf.userData.lightProbeVolumes`, an array of
- * {@link GLTFLightProbeVolumeEntry}. A malformed extension or volume rejects the load with a
+ * {@link GLTFLightProbeVolumeEntry} whose `data` is decoded and checked baked data, ready for
+ * `LightProbeVolume.fromBakedData`. A malformed extension or volume rejects the load with a
  * {@link BakedVolumeError}.
  *
  * ```js
  * loader.register( ( parser ) => new GLTFLightProbeVolumeLoaderPlugin( parser ) );
- * const gltf = await loader.parseAsync( glb, '' );
- * const { data } = gltf.userData.lightProbeVolumes[ 0 ];
+ * const gltf = await loader.loadAsync( 'level.glb' );
+ * const volume = LightProbeVolume.fromBakedData( gltf.userData.lightProbeVolumes[ 0 ].data );
  * ```
  */
 export class GLTFLightProbeVolumeLoaderPlugin implements GLTFLoaderPlugin {
