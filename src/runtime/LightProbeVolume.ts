@@ -15,11 +15,14 @@ import { captureVolume } from './captureBounces.js';
 import { CAPTURE_ACCESS, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
 import { createVolumeInterpolator } from './createVolumeInterpolator.js';
 import type {
-	AddOptions, AddProbeOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters, ProbeOccluders, ProbePosition, SampleOptions,
+	AddOptions, AddProbeOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters, ProbeLighting, ProbeOccluders, ProbePosition,
+	SampleOptions,
 } from './LightProbeVolumeOptions.js';
-import { assertObject3D, createLitObject, disposeLitObject, reportBadBlend, updateLitObject, type LitObject } from './litObjects.js';
+import { assertObject3D } from './litObjects.js';
+import { LitObjectRegistry } from './LitObjectRegistry.js';
 import { ProbeEdits } from './ProbeEdits.js';
-import { ProbeWeighting, assertInterpolator, invalidateVisibility, zonedProbeField } from './ProbeWeighting.js';
+import { medianProbeSpacing } from './probeSpacing.js';
+import { ProbeWeighting, assertInterpolator, invalidateVisibility } from './ProbeWeighting.js';
 import { ProbeZones, zoneIndexOf } from './ProbeZones.js';
 import { assertSHTarget, readPosition } from './volumeArguments.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
@@ -27,7 +30,7 @@ import type { ProbeVolumeUniforms } from './patchMaterial.js';
 
 export type {
 	AddOptions, AddProbeOptions, LightProbeVolumeBounceOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters,
-	ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
+	ProbeLighting, ProbeLightingChoice, ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
 } from './LightProbeVolumeOptions.js';
 
 /** Parameters of {@link LightProbeVolume.fromBakedData} besides the baked data. */
@@ -42,8 +45,9 @@ type BakedVolumeParameters = Omit<LightProbeVolumeParameters, 'positions' | 'sh'
  *
  * ```js
  * const volume = new LightProbeVolume( { positions } );
+ * volume.add( character );  // what moves first: hidden in captures, so it does not light its own probes
+ * volume.add( scene );      // the level: every other mesh, each in the mode that suits it
  * await volume.capture( renderer, scene, { resolution: 32 } );
- * volume.add( character );
  * // each frame:
  * volume.update();
  * renderer.render( scene, camera );
@@ -102,10 +106,12 @@ export class LightProbeVolume {
 	/** The lighting zones, or null when none were given. */
 	readonly zones: ProbeZones | null;
 
-	private readonly lit: LitObject[] = [];
 	private guard: VisibilityGuard | null = null;
 	private readonly weighting: ProbeWeighting;
 	private readonly edits: ProbeEdits;
+	private readonly objects: LitObjectRegistry;
+	/** {@link LightProbeVolume.probeSpacing}, or −1 until computed (again after an edit). */
+	private spacing = - 1;
 
 	/**
 	 * @param parameters See {@link LightProbeVolumeParameters}.
@@ -138,7 +144,8 @@ export class LightProbeVolume {
 		// 1 % of the probes' bounding-box diagonal: the default re-test distance of the guard.
 		const box = boundsOf( this.positions );
 		this.weighting = new ProbeWeighting( this, 0.01 * Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] ) );
-		this.edits = new ProbeEdits( this, this.lit );
+		this.objects = new LitObjectRegistry( this, this.weighting );
+		this.edits = new ProbeEdits( this, this.objects.lit );
 		if ( parameters.occluders !== undefined ) this.setOccluders( parameters.occluders, parameters.guard );
 
 	}
@@ -165,7 +172,8 @@ export class LightProbeVolume {
 		assertOptions( 'LightProbeVolume.setOccluders', 'options', options );
 		if ( occluders === null ) this.guard = null;
 		else this.guard = occluders instanceof VisibilityGuard ? occluders : new VisibilityGuard( occluders, options );
-		for ( const entry of this.lit ) invalidateVisibility( entry );
+		for ( const entry of this.objects.lit ) invalidateVisibility( entry );
+		this.objects.probesChanged();
 		return this;
 
 	}
@@ -205,8 +213,23 @@ export class LightProbeVolume {
 	}
 
 	/**
+	 * The typical distance between probes: the median over live probes of the distance to the
+	 * nearest other one (Infinity with fewer than two). `add( scene )` lights static meshes larger
+	 * than this per vertex or per pixel. Computed when first read, again after a probe edit.
+	 */
+	get probeSpacing(): number {
+
+		if ( this.spacing < 0 ) this.spacing = medianProbeSpacing( this.positions, ( i ) => this.isProbeActive( i ) );
+		return this.spacing;
+
+	}
+
+	/**
 	 * Captures every probe from the scene on the GPU and fills {@link LightProbeVolume.sh}.
-	 * Registered objects are hidden while capturing. All or nothing: the results are staged and
+	 * Objects lit as `'dynamic'` (`add( object )` in mode `'object'`, and what `add( scene )` found
+	 * moving) are hidden while capturing, so add them before capturing — a character added later is
+	 * captured into the probes it is then lit by; `options.exclude` hides more. Scenery lit by the
+	 * volume (large objects, static props) stays in view with its probe light off. All or nothing: the results are staged and
 	 * put into the volume (SH, dirty set, `captureSettings`) only when every probe and pass is
 	 * done, so a capture that fails — a lost context, a throwing callback — changes nothing.
 	 * With `options.bounces` = n, captures n + 1 times, adding a bounce of diffuse interreflection
@@ -228,10 +251,11 @@ export class LightProbeVolume {
 		const commit = ( captured: CapturedProbes ) => {
 
 			if ( this.edits.commitCapture( captured ) ) this.captureSettings = captured.settings;
+			this.objects.probesChanged();
 
 		};
 
-		return { lit: this.lit, commit };
+		return { lit: this.objects.lit, commit };
 
 	}
 
@@ -291,6 +315,7 @@ export class LightProbeVolume {
 	moveProbe( index: number, position: ProbePosition ): this {
 
 		this.edits.move( index, position );
+		this.probesEdited();
 		return this;
 
 	}
@@ -305,7 +330,9 @@ export class LightProbeVolume {
 	 */
 	addProbe( position: ProbePosition, options: AddProbeOptions = {} ): number {
 
-		return this.edits.add( position, options );
+		const index = this.edits.add( position, options );
+		this.probesEdited();
+		return index;
 
 	}
 
@@ -319,6 +346,7 @@ export class LightProbeVolume {
 	removeProbe( index: number ): this {
 
 		this.edits.remove( index );
+		this.probesEdited();
 		return this;
 
 	}
@@ -414,33 +442,44 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * Lights an object (a mesh, or a group such as a loaded character: all its meshes) with this
-	 * volume: its `MeshStandardMaterial`s are patched, and `update()` sets their irradiance from
-	 * the probes around the object's world position. A material shared with an object lit
-	 * separately is cloned for this one (uniforms are per material).
+	 * Lights an object with this volume. A mesh or a group (a loaded character: all its meshes) is
+	 * one object in `options.mode` (default `'object'`): its `MeshStandardMaterial`s are patched (a
+	 * material shared with an object lit separately is cloned for this one) and `update()` blends
+	 * the probes at its world position every frame. A `Scene` (or any object with `mode: 'auto'`)
+	 * is a level: every mesh below it not lit yet, each as it suits — see {@link ProbeLighting};
+	 * mark objects with `userData.probeLighting` or `options.choose`. Call it again after adding
+	 * objects to the level; `add( object )` later takes over from what `add( scene )` chose for it.
+	 *
+	 * Add what moves (characters, vehicles) before `capture()`: only objects lit as `'dynamic'`
+	 * when capturing are hidden from the probes. `add( scene )` finds skinned meshes and what hangs
+	 * from bones by itself; mark other moving objects `'dynamic'`, or add them first.
 	 */
 	add( object: Object3D, options: AddOptions = {} ): this {
 
-		assertObject3D( 'LightProbeVolume.add', object );
-		assertOptions( 'LightProbeVolume.add', 'options', options );
-		if ( this.lit.some( ( entry ) => entry.object === object ) ) return this;
-		const fixedZone = options.zone !== undefined ? zoneIndexOf( 'LightProbeVolume.add', this.zones, options.zone ) : - 1;
-		const entry = createLitObject( object, options, fixedZone, () => zonedProbeField( this, fixedZone ), this.lit );
-		this.lit.push( entry );
-		if ( entry.large === null ) updateLitObject( entry, this.weighting, this.zones, this.sh );
+		this.objects.add( object, options );
 		return this;
 
 	}
 
-	/** Stops lighting an object: its materials are restored (clones made by `add()` are disposed). */
+	/**
+	 * Stops lighting an object, or everything `add( object )` lit for a scene: materials restored,
+	 * clones, textures and vertex attributes made by `add()` disposed.
+	 */
 	remove( object: Object3D ): this {
 
-		assertObject3D( 'LightProbeVolume.remove', object );
-		const index = this.lit.findIndex( ( entry ) => entry.object === object );
-		if ( index < 0 ) return this;
-		const [ entry ] = this.lit.splice( index, 1 );
-		disposeLitObject( entry );
+		this.objects.remove( object );
 		return this;
+
+	}
+
+	/**
+	 * How an object is lit — `'dynamic'`, `'object'`, `'vertex'` or `'texture'` (see
+	 * {@link ProbeLighting}) — by its own registration or one covering it (a character's mesh), or
+	 * null when this volume does not light it.
+	 */
+	getLighting( object: Object3D ): ProbeLighting | null {
+
+		return this.objects.lightingOf( object );
 
 	}
 
@@ -451,8 +490,8 @@ export class LightProbeVolume {
 	getZone( object: Object3D ): string | null {
 
 		assertObject3D( 'LightProbeVolume.getZone', object );
-		const entry = this.lit.find( ( candidate ) => candidate.object === object );
-		return entry && entry.zone >= 0 && this.zones ? this.zones.zones[ entry.zone ].name : null;
+		const zone = this.objects.find( object )?.zone ?? - 1;
+		return zone >= 0 && this.zones ? this.zones.zones[ zone ].name : null;
 
 	}
 
@@ -460,36 +499,35 @@ export class LightProbeVolume {
 	getUniforms( object: Object3D ): ProbeVolumeUniforms | null {
 
 		assertObject3D( 'LightProbeVolume.getUniforms', object );
-		return this.lit.find( ( entry ) => entry.object === object )?.uniforms ?? null;
+		return this.objects.find( object )?.uniforms ?? null;
 
 	}
 
 	/**
-	 * Once per frame, before rendering: locates every registered object (walking from last
-	 * frame's cell) in its zone or the whole volume, drops the probes it cannot see when
-	 * occluders are set, blends its probes' SH and writes its irradiance matrices. Allocation-free.
-	 * Never uploads a non-finite value: an object whose blend is not finite (SH written into `sh`
-	 * directly, bypassing the checks) gets zero matrices (no probe light), and update() then throws
-	 * a RangeError naming it and the probe, after updating the others.
+	 * Once per frame, before rendering: locates every dynamic object (walking from last frame's
+	 * cell) in its zone or the whole volume, drops the probes it cannot see when occluders are set,
+	 * blends its probes' SH and writes its irradiance matrices; scenery only when it moved or the
+	 * probes changed. Allocation-free. An object whose blend is not finite (SH written into `sh`
+	 * directly) gets zero matrices, and update() then throws a RangeError naming it and the probe.
 	 */
 	update(): void {
 
-		const lit = this.lit, weighting = this.weighting, zones = this.zones, sh = this.sh;
-		let bad = - 1;
-		for ( let i = 0, n = lit.length; i < n; i ++ ) {
-
-			if ( ! updateLitObject( lit[ i ], weighting, zones, sh ) && bad < 0 ) bad = i;
-
-		}
-
-		if ( bad >= 0 ) reportBadBlend( 'LightProbeVolume.update', lit[ bad ], sh );
+		this.objects.update( 'LightProbeVolume.update' );
 
 	}
 
 	/** Unregisters every object (restoring their materials). The volume holds no GPU resources of its own. */
 	dispose(): void {
 
-		while ( this.lit.length > 0 ) this.remove( this.lit[ this.lit.length - 1 ].object );
+		this.objects.dispose();
+
+	}
+
+	/** After a probe edit: a new spacing, and static objects blend again. */
+	private probesEdited(): void {
+
+		this.spacing = - 1;
+		this.objects.probesChanged();
 
 	}
 

@@ -185,6 +185,7 @@ export interface AddOptions {
 	/**
 	 * Where the object samples the probes, in its local frame. Default: the centre of its bounding
 	 * box when added — a character's origin is usually at its feet, below the probes meant for it.
+	 * Not taken in `'auto'` mode (each object samples at its own centre).
 	 */
 	anchor?: Vector3 | { x: number; y: number; z: number };
 
@@ -197,24 +198,37 @@ export interface AddOptions {
 
 	/**
 	 * How the object is lit:
-	 * - `'object'` (default): one blend of the probes at the object's anchor, updated every frame —
-	 *   for characters, props, anything that moves.
+	 * - `'object'` (default, except for a `Scene`): one blend of the probes at the object's anchor,
+	 *   updated every frame — for characters, props, anything that moves.
 	 * - `'vertex'`: the probe field sampled at every vertex (see `ProbeVertexLighting`) — for large
 	 *   static or rarely moved meshes (floors, long walls) that one colour would flatten.
 	 * - `'texture'`: the field resampled into a 3D SH texture over the object's bounds and read per
 	 *   pixel (see `ProbeTextureLighting`) — for large objects whose tessellation is coarse.
+	 * - `'auto'` (default for a `Scene`): a whole level — every mesh below the object not lit yet,
+	 *   each in the mode that suits it (see {@link ProbeLighting}); `choose` and
+	 *   `userData.probeLighting` override it per object.
 	 *
 	 * Vertex and texture modes sample the volume per vertex / texel, each point in the zone whose
 	 * bounds hold it (or the `zone` given), without the visibility guard,
 	 * and their objects stay visible in captures (they are scene, not visitors), their probe light
 	 * switched off meanwhile so probes see them as built; capture's `bounces` adds their bounces.
 	 */
-	mode?: 'object' | 'vertex' | 'texture';
+	mode?: 'object' | 'vertex' | 'texture' | 'auto';
+
+	/**
+	 * `'auto'` mode: how to light an object below the root, asked for every object (groups too,
+	 * parents before children) before its `userData.probeLighting` is read. Return a
+	 * {@link ProbeLightingChoice} (a mark on a group lights the group as one object, as
+	 * `add( group, { mode } )` would; `'none'` leaves it and everything below it unlit), or
+	 * undefined to leave the choice to the mark or the automatic rule.
+	 */
+	choose?: ( object: Object3D ) => ProbeLightingChoice | undefined;
 
 	/**
 	 * Whether `capture()` hides the object. Default: true in `'object'` mode (a visitor must not
 	 * light the probes it is lit by), false in the large-object modes (scenery). A static object lit
-	 * in `'object'` mode (a statue) can pass false to stay in the probes' view.
+	 * in `'object'` mode (a statue) can pass false to stay in the probes' view. Not taken in
+	 * `'auto'` mode, which hides what it lights as `'dynamic'` and nothing else.
 	 */
 	hideInCaptures?: boolean;
 
@@ -228,3 +242,26 @@ export interface AddOptions {
 	maxResolution?: number;
 
 }
+
+/**
+ * How `add( scene )` (mode `'auto'`) lights an object, and what `LightProbeVolume.getLighting`
+ * reports:
+ * - `'dynamic'`: one blend per object, every frame, and hidden in captures (it must not light the
+ *   probes it is lit by) — characters, vehicles, anything that moves. Chosen for skinned meshes
+ *   and meshes below a `Bone`; a rig whose skinned meshes and bones share a root with nothing
+ *   else below it is one object (one blend at its centre, as `add( character )` gives).
+ * - `'object'`: one blend per object, part of the scenery: seen by captures, blended when added
+ *   and again only when it moves or the probes change — props no longer than the probe spacing.
+ * - `'vertex'`: the field per vertex — static meshes larger than the probe spacing whose
+ *   triangles are at most half the spacing long.
+ * - `'texture'`: the field per pixel from a 3D SH texture over the mesh — static meshes larger
+ *   than the probe spacing, coarsely tessellated (a floor of two triangles).
+ */
+export type ProbeLighting = 'dynamic' | 'object' | 'vertex' | 'texture';
+
+/**
+ * A mark for `add( scene )`: in `object.userData.probeLighting` (a glTF node's `extras`, a DCC
+ * custom property) or returned by the `choose` option. `'auto'` (or no mark) leaves the choice to
+ * the automatic rule; `'none'` leaves the object and everything below it unlit.
+ */
+export type ProbeLightingChoice = ProbeLighting | 'auto' | 'none';

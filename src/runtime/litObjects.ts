@@ -2,7 +2,9 @@ import { Box3, Matrix4, Vector3, type Material, type Mesh, type Object3D, type S
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertNumber, assertOptionalBoolean, describeValue, firstBeyond } from '../validate.js';
-import type { AddOptions } from './LightProbeVolumeOptions.js';
+import { describeObject, meshWorldBox } from './chooseLighting.js';
+import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
+import { MeshTextureLighting } from './MeshTextureLighting.js';
 import { ProbeTextureLighting } from './ProbeTextureLighting.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
 import { MAX_WEIGHTS, type ProbeWeighting, type VisibilityCache } from './ProbeWeighting.js';
@@ -13,8 +15,28 @@ import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolum
 /*
  * The objects a `LightProbeVolume` lights: registration in its three modes (object, vertex,
  * texture), the rule that decides whether a material is patched in place or cloned, removal, and
- * the per-frame update of an object-mode entry.
+ * the per-frame update of an entry (static entries only when they moved or the probes changed).
  */
+
+/** A large-object lighting of an entry: per vertex (one per mesh) or from a 3D SH texture. */
+export type LargeLighting = ProbeVertexLighting | ProbeTextureLighting | MeshTextureLighting;
+
+/** How an entry was registered: by `add( object )` itself, or as one object of `add( scene )`. */
+export interface EntryScope {
+
+	/** The root passed to `add( scene )` (mode `'auto'`) that registered it; null for `add( object )`. */
+	root: Object3D | null;
+
+	/** Whether the entry lights everything below its object (else the object alone: a mesh of a level). */
+	subtree: boolean;
+
+	/** Blended (or resampled) only when the object moved or the probes changed, not every frame. */
+	static: boolean;
+
+}
+
+/** The scope of `add( object )`: the object with everything below it, updated every frame. */
+export const EXPLICIT_SCOPE: EntryScope = { root: null, subtree: true, static: false };
 
 /** One object registered with `LightProbeVolume.add`. */
 export interface LitObject extends VisibilityCache {
@@ -36,9 +58,23 @@ export interface LitObject extends VisibilityCache {
 	/** The zone used last update (−1: the whole volume); a change resets `hint`. */
 	zone: number;
 	/** Large-object modes: the per-vertex lightings (one per mesh) or the 3D-texture lighting. */
-	large: ( ProbeVertexLighting | ProbeTextureLighting )[] | null;
+	large: LargeLighting[] | null;
 	/** Hidden during `capture()`. */
 	hidden: boolean;
+	/** What `LightProbeVolume.getLighting` reports for the object. */
+	lighting: ProbeLighting;
+	/** The `add( scene )` root that registered it, or null. */
+	root: Object3D | null;
+	/** Whether it lights the object's descendants too. */
+	subtree: boolean;
+	/** Updated only when {@link LitObject.matrix} or {@link LitObject.version} changed. */
+	static: boolean;
+	/** Static entries: the object's world matrix at the last update (NaN before the first). */
+	matrix: Float64Array;
+	/** Static entries: the volume's lighting version at the last update. */
+	version: number;
+	/** The options it was registered with (to register it again). */
+	options: AddOptions;
 
 }
 
@@ -58,9 +94,12 @@ const BLEND_SQUARES = 28 * SH_LIMIT * SH_LIMIT;
  */
 export function createLitObject(
 	object: Object3D, options: AddOptions, fixedZone: number, field: () => ProbeField, lit: readonly LitObject[],
+	scope: EntryScope = EXPLICIT_SCOPE,
 ): LitObject {
 
 	checkAddOptions( options );
+	const mode = options.mode ?? 'object';
+	const hidden = options.hideInCaptures ?? mode === 'object';
 	const entry: LitObject = {
 		object, hint: - 1, sh: new Float32Array( SH_FLOATS ),
 		uniforms: {
@@ -68,16 +107,17 @@ export function createLitObject(
 			probeVolumeIntensity: { value: options.intensity ?? 1 },
 			probeVolumeDirectScale: { value: 1 },
 		},
-		replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor ),
+		replaced: [], patched: [], clones: [], anchor: localBoundsCentre( object, options.anchor, scope.subtree ),
 		fixedZone, zone: - 1, guardPosition: new Float64Array( 3 ), guardIndices: new Uint32Array( MAX_WEIGHTS ),
-		guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2, large: null, hidden: true,
+		guardTested: 0, guardBlocked: 0, guardValid: false, guardFallback: - 2, large: null, hidden,
+		lighting: mode === 'object' ? ( hidden ? 'dynamic' : 'object' ) : mode as 'vertex' | 'texture',
+		root: scope.root, subtree: scope.subtree, static: scope.static, matrix: new Float64Array( 16 ).fill( NaN ), version: - 1,
+		options,
 	};
 
-	const mode = options.mode ?? 'object';
-	entry.hidden = options.hideInCaptures ?? mode === 'object';
 	if ( mode === 'vertex' || mode === 'texture' ) {
 
-		entry.large = createLargeLightings( object, options, mode, field );
+		entry.large = createLargeLightings( object, options, mode, field, scope.subtree );
 		entry.uniforms = entry.large[ 0 ]?.uniforms ?? entry.uniforms;
 		return entry;
 
@@ -105,8 +145,11 @@ export function disposeLitObject( entry: LitObject ): void {
  * far beyond ±SH_LIMIT (SH written into the volume's `sh` directly). Allocation-free.
  * @returns false when the blend was refused (see {@link reportBadBlend}), else true.
  */
-export function updateLitObject( entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array ): boolean {
+export function updateLitObject(
+	entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array, version: number,
+): boolean {
 
+	if ( entry.static && ! staticEntryChanged( entry, version ) ) return true;
 	if ( entry.large !== null ) {
 
 		// Resample only when the object moved or the probes' SH changed (checked inside).
@@ -158,13 +201,29 @@ export function updateLitObject( entry: LitObject, weighting: ProbeWeighting, zo
 }
 
 /**
+ * Whether a static entry must be updated: its object moved (world matrix) or the volume's lighting
+ * version changed since its last update; records both. Allocation-free.
+ */
+function staticEntryChanged( entry: LitObject, version: number ): boolean {
+
+	const object = entry.object;
+	object.updateWorldMatrix( true, false );
+	const e = object.matrixWorld.elements, m = entry.matrix;
+	let changed = entry.version !== version;
+	entry.version = version;
+	for ( let i = 0; i < 16; i ++ ) if ( e[ i ] !== m[ i ] ) { changed = true; m[ i ] = e[ i ]; }
+	return changed;
+
+}
+
+/**
  * Throws the RangeError for an entry whose blend {@link updateLitObject} refused: names the object
  * and the first probe whose SH (written into the volume's `sh` directly) is not finite or beyond
  * ±1e30, or the object's position when the probes are fine.
  */
 export function reportBadBlend( where: string, entry: LitObject, sh: Float32Array ): never {
 
-	const name = entry.object.name ? `"${entry.object.name}"` : `(${entry.object.type} ${entry.object.uuid})`;
+	const name = describeObject( entry.object );
 	const i = firstBeyond( sh, SH_LIMIT );
 	const cause = i >= 0
 		? `probe ${Math.floor( i / SH_FLOATS )} holds sh[${i}] = ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}`
@@ -184,8 +243,8 @@ export function assertObject3D( where: string, object: unknown ): asserts object
 
 }
 
-/** The options of `LightProbeVolume.add`, checked before anything is patched. */
-function checkAddOptions( options: AddOptions ): void {
+/** The options of `LightProbeVolume.add` in modes 'object', 'vertex' and 'texture', checked before anything is patched. */
+export function checkAddOptions( options: AddOptions ): void {
 
 	const where = 'LightProbeVolume.add';
 	assertOptionalBoolean( where, 'options.perVertex', options.perVertex );
@@ -205,7 +264,7 @@ function checkAddOptions( options: AddOptions ): void {
 	const mode = options.mode ?? 'object';
 	if ( mode !== 'object' && mode !== 'vertex' && mode !== 'texture' ) {
 
-		throw new RangeError( `${where}: options.mode must be 'object', 'vertex' or 'texture', got ${describeValue( mode )}.` );
+		throw new RangeError( `${where}: options.mode must be 'object', 'vertex', 'texture' or 'auto', got ${describeValue( mode )}.` );
 
 	}
 
@@ -227,28 +286,38 @@ function checkAddOptions( options: AddOptions ): void {
 
 }
 
-/** The vertex- or texture-mode lightings of an object; none is left behind when one throws. */
+/**
+ * The vertex- or texture-mode lightings of an object (of the object alone, a mesh, when `subtree`
+ * is false); none is left behind when one throws.
+ */
 function createLargeLightings(
-	object: Object3D, options: AddOptions, mode: 'vertex' | 'texture', field: () => ProbeField,
-): ( ProbeVertexLighting | ProbeTextureLighting )[] {
+	object: Object3D, options: AddOptions, mode: 'vertex' | 'texture', field: () => ProbeField, subtree: boolean,
+): LargeLighting[] {
 
-	const large: ( ProbeVertexLighting | ProbeTextureLighting )[] = [];
+	const large: LargeLighting[] = [];
 	try {
 
-		if ( mode === 'texture' ) {
+		const { intensity, texelSize, maxResolution } = options;
+		if ( mode === 'texture' && subtree ) {
 
-			const { intensity, texelSize, maxResolution } = options;
 			large.push( new ProbeTextureLighting( object, field(), { intensity, texelSize, maxResolution } ) );
+
+		} else if ( mode === 'texture' ) {
+
+			large.push( new MeshTextureLighting( object as Mesh, field(), { intensity, texelSize, maxResolution } ) );
 
 		} else {
 
-			object.traverse( ( child ) => {
+			const visit = ( child: Object3D ) => {
 
 				const mesh = child as Mesh;
 				if ( mesh.isMesh !== true ) return;
-				large.push( new ProbeVertexLighting( mesh, field(), { intensity: options.intensity, output: options.vertexOutput } ) );
+				large.push( new ProbeVertexLighting( mesh, field(), { intensity, output: options.vertexOutput } ) );
 
-			} );
+			};
+
+			if ( subtree ) object.traverse( visit );
+			else visit( object );
 
 		}
 
@@ -272,7 +341,7 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 	const owned = new Set<Material>();
 	for ( const other of lit ) for ( const material of other.patched ) owned.add( material );
 
-	entry.object.traverse( ( child ) => {
+	const visit = ( child: Object3D ) => {
 
 		const mesh = child as Mesh & { isInstancedMesh?: boolean };
 		if ( ( mesh as { isMesh?: boolean } ).isMesh !== true ) return;
@@ -319,18 +388,21 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 
 		}
 
-	} );
+	};
+
+	if ( entry.subtree ) entry.object.traverse( visit );
+	else visit( entry.object );
 
 }
 
-/** The centre of an object's bounding box in its own frame (or the given anchor). */
-function localBoundsCentre( object: Object3D, anchor?: { x: number; y: number; z: number } ): Float64Array {
+/** The centre of an object's bounding box (of the object alone when not `subtree`) in its own frame, or the given anchor. */
+function localBoundsCentre( object: Object3D, anchor: { x: number; y: number; z: number } | undefined, subtree: boolean ): Float64Array {
 
 	if ( anchor ) return Float64Array.of( anchor.x, anchor.y, anchor.z );
 	object.updateWorldMatrix( true, true );
 	// A skinned mesh's bounds follow its bones, whose matrices stay zero until the first render.
 	object.traverse( ( child ) => ( child as SkinnedMesh ).skeleton?.update() );
-	const box = new Box3().setFromObject( object );
+	const box = subtree ? new Box3().setFromObject( object ) : meshWorldBox( object as Mesh, new Box3() );
 	if ( box.isEmpty() ) return new Float64Array( 3 );
 	const centre = box.getCenter( new Vector3() ).applyMatrix4( new Matrix4().copy( object.matrixWorld ).invert() );
 	return Float64Array.of( centre.x, centre.y, centre.z );
