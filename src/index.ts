@@ -22,6 +22,10 @@ export { VisibilityGuard } from './runtime/VisibilityGuard.js';
 export type { VisibilityGuardOptions } from './runtime/VisibilityGuard.js';
 export type { ProbeZoneDefinition, BoxLike } from './runtime/ProbeZones.js';
 
+// Seeing the probes: spheres shaded by their SH, the cells, the cell an object is lit from.
+export { LightProbeVolumeHelper } from './runtime/LightProbeVolumeHelper.js';
+export type { HighlightTarget } from './runtime/ProbeCellHighlight.js';
+
 // Objects managed by hand, and large objects lit per vertex or per texel (`add( object, { mode } )` uses these).
 export { patchMaterial, unpatchMaterial, getProbeVolumeUniforms } from './runtime/patchMaterial.js';
 export type { PatchMaterialOptions, ProbeVolumeUniforms, ProbeVolumeSource } from './runtime/patchMaterial.js';
