@@ -312,9 +312,9 @@ export interface StaticSunOptions {
 }
 
 /**
- * A shadow-casting sun for static scenery. Its shadow map is drawn once, at the first render (the
- * first probe capture), and reused by every capture and frame; it is drawn again after a lost
- * WebGL context comes back.
+ * A shadow-casting sun over the model. The shadow map keeps three.js's defaults: redrawn every
+ * frame, so the moving character casts a shadow too; probe captures draw it once per capture
+ * (`ProbeCapturer` does, and restores the renderer's settings after).
  */
 export function addStaticSun(
 	app: SceneHost, { direction, color, intensity, extent, mapSize = 2048 }: StaticSunOptions
@@ -331,12 +331,9 @@ export function addStaticSun(
 	sun.shadow.normalBias = 0.03;
 	app.scene.add( sun, sun.target );
 
-	const shadowMap = app.renderer.shadowMap;
-	shadowMap.enabled = true;
-	shadowMap.type = THREE.PCFSoftShadowMap;
-	shadowMap.autoUpdate = false;
-	shadowMap.needsUpdate = true;
-	app.renderer.domElement.addEventListener( 'webglcontextrestored', () => { shadowMap.needsUpdate = true; } );
+	app.renderer.shadowMap.enabled = true;
+	// r187's PCF filter is the soft one (a rotated disc of samples, `shadow.radius` wide); PCFSoftShadowMap was removed.
+	app.renderer.shadowMap.type = THREE.PCFShadowMap;
 	return sun;
 
 }
