@@ -7,7 +7,7 @@
 import * as THREE from 'three';
 import { placeFromMeshes } from '../src/placement/placeFromMeshes.js';
 import { candidatesFromVertices } from '../src/placement/candidatesFromVertices.js';
-import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, PARITY_RAY_DIRECTIONS } from '../src/placement/classifyPoints.js';
+import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, INSIDE_RAY_DIRECTIONS } from '../src/placement/classifyPoints.js';
 import { gatherWorldGeometry } from '../src/geometry/gatherWorldGeometry.js';
 import { closestPointOnTriangle } from '../src/geometry/closestPointOnTriangle.js';
 import { intersectRayTriangle } from '../src/geometry/intersectRayTriangle.js';
@@ -72,8 +72,8 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 /** classifyPoints' tests and vote, run on every triangle instead of a BVH's candidates. */
 function classifyBruteForce( points: Float64Array, triangles: Float64Array, minDistance: number ): Uint8Array {
 
-	const count = points.length / 3, triangleCount = triangles.length / 9, rays = PARITY_RAY_DIRECTIONS.length / 3;
-	const d = PARITY_RAY_DIRECTIONS, r2 = minDistance * minDistance, scratch = new Float64Array( 6 );
+	const count = points.length / 3, triangleCount = triangles.length / 9, rays = INSIDE_RAY_DIRECTIONS.length / 3;
+	const d = INSIDE_RAY_DIRECTIONS, r2 = minDistance * minDistance, scratch = new Float64Array( 6 );
 	const classes = new Uint8Array( count );
 	for ( let i = 0; i < count; i ++ ) {
 

@@ -1,4 +1,5 @@
 import { assertNumber, assertPoints } from '../validate.js';
+import { thinToSpacing } from './thinToSpacing.js';
 
 /** Options of {@link candidatesFromVertices}. */
 export interface CandidatesFromVerticesOptions {
@@ -71,62 +72,5 @@ export function candidatesFromVertices(
 
 	if ( minSpacing === 0 ) return moved.slice( 0, 3 * movedCount );
 	return thinToSpacing( moved, movedCount, minSpacing );
-
-}
-
-/**
- * Greedy thinning in index order with a hashed grid: a chained hash table in typed arrays
- * (`head` per bucket, `next` per kept point). Different cells may share a bucket; that only costs
- * a few extra distance tests, never a wrong answer, because every test is on the true distance.
- */
-function thinToSpacing( points: Float64Array, count: number, spacing: number ): Float64Array {
-
-	let buckets = 1;
-	while ( buckets < 2 * count ) buckets *= 2;
-	const mask = buckets - 1;
-	const head = new Int32Array( buckets ).fill( - 1 );
-	const next = new Int32Array( count );
-	const kept = new Float64Array( 3 * count );
-	const spacingSquared = spacing * spacing, inverse = 1 / spacing;
-	let keptCount = 0;
-
-	for ( let i = 0; i < count; i ++ ) {
-
-		const x = points[ 3 * i ], y = points[ 3 * i + 1 ], z = points[ 3 * i + 2 ];
-		const cx = Math.floor( x * inverse ), cy = Math.floor( y * inverse ), cz = Math.floor( z * inverse );
-		let free = true;
-		search: for ( let dz = - 1; dz <= 1; dz ++ ) for ( let dy = - 1; dy <= 1; dy ++ ) for ( let dx = - 1; dx <= 1; dx ++ ) {
-
-			for ( let k = head[ cellHash( cx + dx, cy + dy, cz + dz ) & mask ]; k !== - 1; k = next[ k ] ) {
-
-				const ex = kept[ 3 * k ] - x, ey = kept[ 3 * k + 1 ] - y, ez = kept[ 3 * k + 2 ] - z;
-				if ( ex * ex + ey * ey + ez * ez < spacingSquared ) {
-
-					free = false;
-					break search;
-
-				}
-
-			}
-
-		}
-
-		if ( ! free ) continue;
-		const o = 3 * keptCount;
-		kept[ o ] = x; kept[ o + 1 ] = y; kept[ o + 2 ] = z;
-		const bucket = cellHash( cx, cy, cz ) & mask;
-		next[ keptCount ] = head[ bucket ];
-		head[ bucket ] = keptCount ++;
-
-	}
-
-	return kept.slice( 0, 3 * keptCount );
-
-}
-
-/** Spreads integer cell coordinates over 32 bits (the large-prime XOR hash of Teschner et al.). */
-function cellHash( x: number, y: number, z: number ): number {
-
-	return ( Math.imul( x, 73856093 ) ^ Math.imul( y, 19349663 ) ^ Math.imul( z, 83492791 ) ) >>> 0;
 
 }

@@ -1,7 +1,10 @@
 import type { Box3, Object3D } from 'three';
-import { assertNumber } from '../validate.js';
+import { assertNumber, assertOptionalNumber } from '../validate.js';
 import { candidatesFromVertices } from './candidatesFromVertices.js';
-import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE } from './classifyPoints.js';
+import { classifyPointsFor, OPEN_SPACE } from './classifyPoints.js';
+import { keepClass } from './keepClass.js';
+import { DRAWN_AGAINST_NORMAL, DRAWN_ALONG_NORMAL, gatherDrawnSides } from './gatherDrawnSides.js';
+import { readPointList, type PointList } from './readPointList.js';
 import { gatherWorldGeometry } from '../geometry/gatherWorldGeometry.js';
 import { TriangleBVH } from '../geometry/TriangleBVH.js';
 
@@ -15,10 +18,23 @@ export interface PlaceFromMeshesOptions {
 	minSpacing: number;
 
 	/**
-	 * Drop candidates inside closed geometry, by a majority vote of ray parity (default true). Turn
-	 * off for scenes made of open surfaces, where parity means nothing.
+	 * Drop candidates inside solids (default true): inside closed props and walls, and behind the
+	 * undrawn side of open single-sided surfaces — `classifyPoints`' inside test, with each
+	 * triangle's drawn side read from its material. Rooms of open quads and rooms drawn from inside
+	 * (`BackSide`) are open space.
 	 */
 	rejectInside?: boolean;
+
+	/**
+	 * Seeds of open space, e.g. `[ spawn ]` (the player's spawn, above the floor): candidates that
+	 * no seed reaches without crossing a surface are dropped — those in sealed rooms and cavities,
+	 * and outside the scene's bounding box. Recommended: it is the one test that knows which side
+	 * of a double-sided wall is the level. See docs/placement.md.
+	 */
+	reachableFrom?: PointList;
+
+	/** Lattice spacing of the `reachableFrom` flood fill (default: the scene's longest side / 64). */
+	reachCellSize?: number;
 
 	/**
 	 * Drop candidates with any triangle closer than this (default `|offset| / 2`; 0 turns it off).
@@ -38,10 +54,12 @@ export interface PlaceFromMeshesOptions {
 
 /**
  * Probe candidates from a scene's meshes (paper 2.1, "automatic generation from the background
- * mesh's vertices"): the world-space vertices of every mesh under `root`, moved `offset` along
- * their normals, thinned to `minSpacing`, restricted to `bounds`, then stripped of those near a
- * surface or inside geometry. The result is a dense candidate set: capture it and pass it to
- * `reduceProbes`, or edit it by hand.
+ * mesh's vertices"): the world-space vertices of every mesh under `root`, moved `offset` towards
+ * the side their material draws (along the normal for `FrontSide`, against it for `BackSide`,
+ * both ways for `DoubleSide`), thinned to `minSpacing`, restricted to `bounds`, then stripped of
+ * those near a surface, inside geometry or (with `reachableFrom`) out of the player's reach. The
+ * result is a dense candidate set: capture it and pass it to `reduceProbes` (docs/placement.md
+ * has the recipe; `placeProbes` runs it), or edit it by hand.
  *
  * The geometry tests run on the pure `TriangleBVH` over all triangles under `root` (not three's
  * Raycaster), so 100k triangles and a few thousand candidates take well under a few seconds.
@@ -58,7 +76,7 @@ export function placeFromMeshes( root: Object3D, options: PlaceFromMeshesOptions
 	}
 
 	if ( options === null || typeof options !== 'object' ) throw new TypeError( `${where}: options must be { offset, minSpacing, … }.` );
-	const { offset, minSpacing, rejectInside = true, bounds } = options;
+	const { offset, minSpacing, rejectInside = true, bounds, reachCellSize } = options;
 	assertNumber( where, 'options.offset', offset );
 	assertNumber( where, 'options.minSpacing', minSpacing );
 	if ( minSpacing < 0 ) throw new RangeError( `${where}: options.minSpacing must be ≥ 0, got ${minSpacing}.` );
@@ -66,29 +84,64 @@ export function placeFromMeshes( root: Object3D, options: PlaceFromMeshesOptions
 	assertNumber( where, 'options.minDistance', minDistance );
 	if ( minDistance < 0 ) throw new RangeError( `${where}: options.minDistance must be ≥ 0, got ${minDistance}.` );
 	if ( bounds !== undefined && ( bounds === null || ( bounds as Box3 ).isBox3 !== true ) ) throw new TypeError( `${where}: options.bounds must be a three.js Box3.` );
+	assertOptionalNumber( where, 'options.reachCellSize', reachCellSize, Number.MIN_VALUE );
+	const seeds = options.reachableFrom === undefined ? undefined : readPointList( where, 'options.reachableFrom', options.reachableFrom );
 
 	const geometry = gatherWorldGeometry( root );
-	let candidates = candidatesFromVertices( geometry.vertexPositions, geometry.vertexNormals, { offset, minSpacing } );
+	const { triangleSides, vertexSides } = gatherDrawnSides( root );
+	const { positions, normals } = drawnSideVertices( geometry.vertexPositions, geometry.vertexNormals, vertexSides );
+	let candidates = candidatesFromVertices( positions, normals, { offset, minSpacing } );
 	if ( bounds ) candidates = filterInBox( candidates, bounds );
-	if ( ! rejectInside && minDistance === 0 ) return candidates;
+	if ( ! rejectInside && minDistance === 0 && seeds === undefined ) return candidates;
 
 	const bvh = new TriangleBVH( geometry.triangles );
-	const classes = classifyPoints( candidates, bvh, { minDistance, parity: rejectInside } );
+	const classes = classifyPointsFor( where, candidates, bvh, {
+		minDistance, inside: rejectInside, sides: triangleSides, reachableFrom: seeds, reachCellSize,
+	} );
+	return keepClass( candidates, classes, OPEN_SPACE );
 
-	let kept = 0;
-	const out = new Float64Array( candidates.length );
-	for ( let i = 0; i < classes.length; i ++ ) {
+}
 
-		const c = classes[ i ];
-		if ( c === NEAR_SURFACE || c === INSIDE_GEOMETRY ) continue;
-		out[ 3 * kept ] = candidates[ 3 * i ]; out[ 3 * kept + 1 ] = candidates[ 3 * i + 1 ]; out[ 3 * kept + 2 ] = candidates[ 3 * i + 2 ];
-		kept ++;
+/**
+ * Each vertex once per side its material draws: with its normal (`FrontSide`), with the normal
+ * negated (`BackSide`: a room drawn from inside has normals pointing out of it), or both.
+ */
+function drawnSideVertices(
+	positions: Float64Array, normals: Float64Array, sides: Uint8Array
+): { positions: Float64Array; normals: Float64Array } {
+
+	let count = 0;
+	for ( let v = 0; v < sides.length; v ++ ) {
+
+		count += ( sides[ v ] & DRAWN_ALONG_NORMAL ? 1 : 0 ) + ( sides[ v ] & DRAWN_AGAINST_NORMAL ? 1 : 0 );
 
 	}
 
-	return out.slice( 0, 3 * kept );
+	const outPositions = new Float64Array( 3 * count ), outNormals = new Float64Array( 3 * count );
+	let o = 0;
+	for ( let v = 0; v < sides.length; v ++ ) {
+
+		for ( const [ flag, sign ] of SIDE_SIGNS ) {
+
+			if ( ( sides[ v ] & flag ) === 0 ) continue;
+			for ( let a = 0; a < 3; a ++ ) {
+
+				outPositions[ 3 * o + a ] = positions[ 3 * v + a ];
+				outNormals[ 3 * o + a ] = sign * normals[ 3 * v + a ];
+
+			}
+
+			o ++;
+
+		}
+
+	}
+
+	return { positions: outPositions, normals: outNormals };
 
 }
+
+const SIDE_SIGNS = [ [ DRAWN_ALONG_NORMAL, 1 ], [ DRAWN_AGAINST_NORMAL, - 1 ] ] as const;
 
 function filterInBox( points: Float64Array, box: Box3 ): Float64Array {
 

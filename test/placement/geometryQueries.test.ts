@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { BoxGeometry, SphereGeometry, TorusGeometry } from 'three';
 import { intersectRayTriangle } from '../../src/geometry/intersectRayTriangle.js';
 import { TriangleBVH } from '../../src/geometry/TriangleBVH.js';
-import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, PARITY_RAY_DIRECTIONS } from '../../src/placement/classifyPoints.js';
+import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, INSIDE_RAY_DIRECTIONS } from '../../src/placement/classifyPoints.js';
 import { closestPointOnTriangle } from '../../src/geometry/closestPointOnTriangle.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance, sphereDistance, torusDistance, trianglesOf } from './helpers.js';
@@ -293,10 +293,10 @@ describe( 'classifyPoints (inside by majority of ray parities, near a surface by
 
 	it( 'uses 7 unit ray directions, none along an axis, axis plane or 45° diagonal', () => {
 
-		expect( PARITY_RAY_DIRECTIONS.length ).toBe( 21 );
+		expect( INSIDE_RAY_DIRECTIONS.length ).toBe( 21 );
 		for ( let r = 0; r < 7; r ++ ) {
 
-			const d = Array.from( PARITY_RAY_DIRECTIONS.subarray( 3 * r, 3 * r + 3 ) );
+			const d = Array.from( INSIDE_RAY_DIRECTIONS.subarray( 3 * r, 3 * r + 3 ) );
 			expect( Math.hypot( ...d ) ).toBeCloseTo( 1, 12 );
 			for ( const c of d ) expect( Math.abs( c ) ).toBeGreaterThan( 0.02 );
 			for ( const [ i, j ] of [ [ 0, 1 ], [ 1, 2 ], [ 0, 2 ] ] ) {
