@@ -3,7 +3,8 @@
  * `capture-lighting`: bakes a light probe volume from a scene file and a probe layout, headless
  * (`bake`), or checks a baked volume file (`inspect`). See `capture-lighting --help`.
  *
- * Exit codes: 0 ok, 1 failure at run time (or an invalid volume file), 2 bad usage or input.
+ * Exit codes: 0 ok, 1 failure at run time (or an invalid volume file, or a warning under --strict), 2
+ * bad usage or input.
  * Every error is one line starting with "capture-lighting: ".
  */
 
@@ -30,7 +31,7 @@ async function main( argv: readonly string[] ): Promise<number> {
 		if ( command.command === 'inspect' ) {
 
 			const { inspect } = await import( './inspect.js' );
-			inspect( command.file );
+			inspect( command.file, { strict: command.strict } );
 			return 0;
 
 		}

@@ -46,7 +46,8 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake (headless Chromium)
 		expect( row( run.stdout, 'probes' ) ).toBe( '10' );
 		expect( row( run.stdout, 'tetrahedra' ) ).toBe( String( expectedTetrahedra ) );
 		expect( row( run.stdout, 'resolution' ) ).toBe( '8² per cube face' );
-		expect( row( run.stdout, 'output' ) ).toBe( `${out} (bin, SH float16)` );
+		expect( row( run.stdout, 'output' ) ).toBe( `${out} (bin, SH float32)` ); // the API's default precision
+		expect( row( run.stdout, 'lights' ) ).toBe( '1 ambient light (flags); 1 emissive material' );
 		expect( row( run.stdout, 'capture time' ) ).toMatch( /^\d+(\.\d)? m?s / );
 		expect( row( run.stdout, 'size on disk' ) ).toContain( `${statSync( out ).size.toLocaleString( 'en-US' )} bytes` );
 		// Not a terminal: progress as lines, the last one complete.
@@ -58,7 +59,7 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake (headless Chromium)
 		expect( row( inspected.stdout, 'probes' ) ).toBe( '10' );
 		expect( row( inspected.stdout, 'tetrahedra' ) ).toBe( String( expectedTetrahedra ) );
 		expect( row( inspected.stdout, 'roles' ) ).toBe( 'bounce 4, fill 4, bleed 2' );
-		expect( row( inspected.stdout, 'SH precision' ) ).toBe( 'float16' );
+		expect( row( inspected.stdout, 'SH precision' ) ).toBe( 'float32' );
 		expect( row( inspected.stdout, 'capture' ) ).toBe( 'resolution 8, near 0.05, far 1000, type half, solidAngle exact' );
 
 		const volume = decodeBakedVolume( readFileSync( out ) );
