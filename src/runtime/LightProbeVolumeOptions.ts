@@ -94,6 +94,8 @@ export interface LightProbeVolumeBounceOptions {
 	 * capture would draw — not skinned or instanced, not inside an object registered with
 	 * `volume.add()` or listed in `exclude`, not rejected by `filter`, on a layer the cube camera
 	 * sees, and with no probe-patched material already (such a mesh has probe light of its own).
+	 * The scenery this volume lights itself (what `add( scene )` registered, large objects) takes
+	 * the previous pass's light through its own lighting instead.
 	 */
 	staticMeshes?: readonly Mesh[];
 
@@ -128,7 +130,10 @@ export interface LightProbeVolumeBounceOptions {
 export interface LightProbeVolumeCaptureOptions
 	extends ProbeCaptureSettings, Omit<ProbeCaptureOptions, 'exclude'>, LightProbeVolumeBounceOptions {
 
-	/** More objects to hide during the capture; objects registered with `add()` are always hidden. */
+	/**
+	 * More objects to hide during the capture; objects lit as `'dynamic'` (`add( object )` in mode
+	 * `'object'`, what `add( scene )` finds moving) are always hidden.
+	 */
 	exclude?: Iterable<Object3D>;
 
 	/** Capture only these probes (e.g. the one an artist just moved); the others keep their SH. */

@@ -42,6 +42,7 @@ export class MeshTextureLighting {
 	private readonly clones: Material[] = [];
 	private readonly matrix = new Float64Array( 16 );
 	private disposed = false;
+	private fieldChanged = false;
 
 	/**
 	 * @param mesh A mesh with a `MeshStandardMaterial` and a position attribute, in world position.
@@ -80,8 +81,22 @@ export class MeshTextureLighting {
 
 	}
 
+	/** The probes the texture samples; assigning one resamples on the next `update()`. */
+	get field(): ProbeField {
+
+		return this.volumeTexture.field;
+
+	}
+
+	set field( field: ProbeField ) {
+
+		this.volumeTexture.field = field;
+		this.fieldChanged = true;
+
+	}
+
 	/**
-	 * Resamples when the mesh moved (new bounds) or the field's SH changed. Allocation-free when
+	 * Resamples when the mesh moved (new bounds), the field was replaced or its SH changed. Allocation-free when
 	 * nothing changed.
 	 * @returns Whether it resampled.
 	 */
@@ -92,6 +107,8 @@ export class MeshTextureLighting {
 		const e = this.mesh.matrixWorld.elements, m = this.matrix;
 		let moved = false;
 		for ( let i = 0; i < 16; i ++ ) if ( e[ i ] !== m[ i ] ) { moved = true; m[ i ] = e[ i ]; }
+		const force = this.fieldChanged;
+		this.fieldChanged = false;
 		if ( moved ) {
 
 			this.volumeTexture.setBounds( this.bounds() );
@@ -99,7 +116,7 @@ export class MeshTextureLighting {
 
 		}
 
-		return this.volumeTexture.resample( false );
+		return this.volumeTexture.resample( force );
 
 	}
 

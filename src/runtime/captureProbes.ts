@@ -7,6 +7,8 @@ import { SH_FLOATS } from '../validate.js';
 import { bakedCaptureSettings } from './bakedVolumeData.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
+import type { ProbeField } from './ProbeField.js';
+import { lightScenery, switchOffScenery } from './sceneryLight.js';
 
 /** The fields of a `LightProbeVolume` that {@link captureProbes} reads (it writes nothing). */
 export interface CapturedVolume {
@@ -55,14 +57,17 @@ export interface CapturedProbes {
 /**
  * One capture of a volume's probes (`LightProbeVolume.capture` without bounces): the probes of
  * `indices` (checked by the caller), in one pass per role with settings of its own, then de-ringed
- * or made non-negative. Objects lit in `'object'` mode (`hidden`) are hidden; large objects stay
- * visible with their probe light off. Nothing of the volume changes: the result is staged, so a
+ * or made non-negative. Objects lit as `'dynamic'` (`hidden`) are hidden; scenery lit by the
+ * volume (static props, large objects) stays visible with its probe light off — or, given
+ * `scenery` (a bounce pass: the previous pass's probes), lit by those probes. Nothing of the volume changes: the result is staged, so a
  * capture that fails in any pass (a lost context, a throwing callback) leaves every probe as it was.
  * @param options Checked by the caller (`checkVolumeCaptureOptions`); `exclude` an array.
+ * @param scenery The probes that light the volume's scenery during this capture, or null (its probe light off).
  */
 export async function captureProbes(
 	volume: CapturedVolume, lit: readonly LitObject[], indices: readonly number[],
 	renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions & { exclude?: Object3D[] },
+	scenery: ProbeField | null = null,
 ): Promise<CapturedProbes> {
 
 	// Probes whose role has its own settings (paper 3.4: sky, bounce and reflection captures
@@ -83,18 +88,9 @@ export async function captureProbes(
 	const sh = new Float32Array( SH_FLOATS * order.length );
 	const deringing = options.deringing ?? 0;
 	const nonNegative = options.nonNegative === true;
-	// Visitors are hidden; scenery lit by the probes (large objects) is seen as built: probe light off.
+	// Visitors are hidden; scenery lit by the probes is seen as built (probe light off), or with a bounce pass's light.
 	const exclude = [ ...lit.filter( ( entry ) => entry.hidden ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
-	const intensities: [ { value: number }, number ][] = [];
-	for ( const entry of lit ) {
-
-		if ( entry.hidden ) continue;
-		const all = entry.large ? entry.large.map( ( lighting ) => lighting.uniforms ) : [ entry.uniforms ];
-		for ( const uniforms of all ) intensities.push( [ uniforms.probeVolumeIntensity, uniforms.probeVolumeIntensity.value ] );
-
-	}
-
-	for ( const [ uniform ] of intensities ) uniform.value = 0;
+	const restoreScenery = scenery !== null ? lightScenery( lit, scenery ) : switchOffScenery( lit );
 	const total = order.length;
 	let done = 0;
 	try {
@@ -125,7 +121,7 @@ export async function captureProbes(
 
 	} finally {
 
-		for ( const [ uniform, value ] of intensities ) uniform.value = value;
+		restoreScenery();
 
 	}
 
