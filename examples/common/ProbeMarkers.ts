@@ -1,32 +1,34 @@
 import * as THREE from 'three';
-import { type LightProbeVolume } from 'three-capture-lighting';
-import { evaluateIrradiance, type TetrahedralMesh } from 'three-capture-lighting/math';
+import { LightProbeVolumeHelper, type LightProbeVolume } from 'three-capture-lighting';
 
-const EDGES = [ [ 0, 1 ], [ 0, 2 ], [ 0, 3 ], [ 1, 2 ], [ 1, 3 ], [ 2, 3 ] ];
+const _matrix = new THREE.Matrix4();
+const _sphere = new THREE.Sphere();
+const _hit = new THREE.Vector3();
 
 /**
- * What a scene page draws of its volume: a marker per probe shaded by that probe's own SH, the
- * tetrahedra (or triangles) as a faint wireframe, and the cell holding the character in yellow.
+ * What a scene page draws of its volume: the library's `LightProbeVolumeHelper` (a ball per probe
+ * shaded by that probe's own SH, the tetrahedra or triangles as a faint wireframe, the cell
+ * holding the character in yellow), plus an invisible handle per probe for probe editing to pick
+ * and drag.
  */
 export class ProbeMarkers {
 
-	/** One ball per probe, `userData.probe` its index: what probe editing picks and drags. */
+	/**
+	 * One handle per probe, `userData.probe` its id: what probe editing picks (a raycast hits the
+	 * handle's ball) and drags; the ball drawn follows a dragged handle.
+	 */
 	readonly markers = new THREE.Group();
-	private readonly wireframe = new THREE.LineSegments(
-		new THREE.BufferGeometry(),
-		new THREE.LineBasicMaterial( { color: 0xaaaaaa, transparent: true, opacity: 0.3 } ),
-	);
-	private readonly current = new THREE.LineSegments(
-		new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( new Float32Array( 36 ), 3 ) ),
-		new THREE.LineBasicMaterial( { color: 0xffff00 } ),
-	);
+	private helper: LightProbeVolumeHelper | null = null;
+	private readonly parent: THREE.Object3D;
 	private readonly radius: number;
+	private highlighted: THREE.Vector3 | THREE.Object3D | null = null;
 
 	/** Adds the markers to `parent` (a group left out of captures); `radius` of each probe's ball. */
 	constructor( parent: THREE.Object3D, radius: number ) {
 
+		this.parent = parent;
 		this.radius = radius;
-		parent.add( this.markers, this.wireframe, this.current );
+		parent.add( this.markers );
 
 	}
 
@@ -37,93 +39,86 @@ export class ProbeMarkers {
 
 	}
 
-	/** Rebuilds the markers and the wireframe for `volume` (after a capture or an edit). */
+	/** Redraws the probes and cells of `volume` (after a capture or an edit; a new volume gets a new helper). */
 	update( volume: LightProbeVolume ): void {
 
-		for ( const marker of this.markers.children as THREE.Mesh[] ) {
+		if ( this.helper?.volume === volume ) {
 
-			marker.geometry.dispose();
-			( marker.material as THREE.Material ).dispose();
+			this.helper.update();
+
+		} else {
+
+			this.helper?.removeFromParent();
+			this.helper?.dispose();
+			this.helper = new LightProbeVolumeHelper( volume, this.radius );
+			this.highlighted = null;
+			this.parent.add( this.helper );
 
 		}
 
 		this.markers.clear();
-		const e = new Float32Array( 3 );
 		for ( let i = 0; i < volume.count; i ++ ) {
 
-			// A white diffuse ball lit by this probe alone: vertex colour E(n) / π, no other light.
-			const geometry = new THREE.SphereGeometry( this.radius, 12, 6 );
-			const normals = geometry.getAttribute( 'normal' );
-			const colors = new Float32Array( 3 * normals.count );
-			for ( let v = 0; v < normals.count; v ++ ) {
-
-				evaluateIrradiance( volume.sh, [ normals.getX( v ), normals.getY( v ), normals.getZ( v ) ], e, 27 * i );
-				colors.set( [ Math.max( 0, e[ 0 ] ) / Math.PI, Math.max( 0, e[ 1 ] ) / Math.PI, Math.max( 0, e[ 2 ] ) / Math.PI ], 3 * v );
-
-			}
-
-			geometry.setAttribute( 'color', new THREE.BufferAttribute( colors, 3 ) );
-			const marker = new THREE.Mesh( geometry, new THREE.MeshBasicMaterial( { vertexColors: true } ) );
-			marker.position.fromArray( volume.positions, 3 * i );
-			marker.userData.probe = i;
-			this.markers.add( marker );
+			if ( ! volume.isProbeActive( i ) ) continue;
+			const handle = new THREE.Object3D();
+			handle.position.fromArray( volume.positions, 3 * i );
+			handle.userData.probe = i;
+			handle.raycast = ( raycaster, intersects ) => hitBall( handle, this.radius, raycaster, intersects );
+			this.markers.add( handle );
 
 		}
 
-		const edges: number[] = [];
-		const mesh = volume.interpolator as TetrahedralMesh;
-		const cells = mesh.tetrahedra ?? ( volume.interpolator as unknown as { triangles: Uint32Array } ).triangles;
-		const stride = mesh.tetrahedra ? 4 : 3;
-		for ( let t = 0; t < cells.length / stride; t ++ ) {
+	}
 
-			for ( const [ a, b ] of EDGES ) {
+	/**
+	 * Every frame: probes and cells shown or not; with cells, the one holding `target` (a point read
+	 * every frame, or an object: the cell it samples) in yellow. A dragged handle moves its ball.
+	 */
+	show( showProbes: boolean, showCells: boolean, volume: LightProbeVolume, target: THREE.Vector3 | THREE.Object3D ): void {
 
-				if ( b >= stride ) continue;
-				for ( const k of [ a, b ] ) {
+		if ( this.helper?.volume !== volume ) this.update( volume );
+		const helper = this.helper!;
+		helper.probes.visible = showProbes;
+		helper.tetrahedra = showCells;
+		const highlighted = showCells ? target : null;
+		if ( highlighted !== this.highlighted ) {
 
-					const v = 3 * cells[ stride * t + k ];
-					edges.push( ...volume.positions.subarray( v, v + 3 ) );
-
-				}
-
-			}
+			helper.highlight( highlighted );
+			this.highlighted = highlighted;
 
 		}
 
-		this.wireframe.geometry.dispose();
-		this.wireframe.geometry = new THREE.BufferGeometry().setAttribute( 'position', new THREE.Float32BufferAttribute( edges, 3 ) );
+		if ( showProbes ) this.followHandles( helper );
 
 	}
 
-	/** Every frame: markers and cells shown or not; with cells, the one holding `point` in yellow. */
-	show( showProbes: boolean, showCells: boolean, volume: LightProbeVolume, point: THREE.Vector3 ): void {
+	/** Moves the ball of any handle that is not where its ball is (during a drag, or after a failed move). */
+	private followHandles( helper: LightProbeVolumeHelper ): void {
 
-		this.markers.visible = showProbes;
-		this.wireframe.visible = this.current.visible = showCells;
-		if ( showCells ) this.highlightCell( volume, point );
+		const matrices = helper.probes.instanceMatrix, array = matrices.array, handles = this.markers.children;
+		for ( let h = 0; h < handles.length; h ++ ) {
 
-	}
-
-	private highlightCell( volume: LightProbeVolume, point: THREE.Vector3 ): void {
-
-		const mesh = volume.interpolator as TetrahedralMesh;
-		const attribute = this.current.geometry.getAttribute( 'position' ) as THREE.BufferAttribute;
-		const cell = mesh.locate ? mesh.locate( point.x, point.y, point.z ) : - 1;
-		let o = 0;
-		for ( const [ a, b ] of EDGES ) {
-
-			for ( const k of [ a, b ] ) {
-
-				const v = cell >= 0 ? 3 * mesh.tetrahedra[ 4 * cell + k ] : 0;
-				attribute.setXYZ( o ++, volume.positions[ v ], volume.positions[ v + 1 ], volume.positions[ v + 2 ] );
-
-			}
+			const i = handles[ h ].userData.probe as number, p = handles[ h ].position, o = 16 * i;
+			// Instance matrices are float32: compare with the handle's position rounded the same way.
+			const x = Math.fround( p.x ), y = Math.fround( p.y ), z = Math.fround( p.z );
+			if ( array[ o + 12 ] === x && array[ o + 13 ] === y && array[ o + 14 ] === z ) continue;
+			helper.probes.setMatrixAt( i, _matrix.makeScale( helper.size, helper.size, helper.size ).setPosition( p ) );
+			matrices.needsUpdate = true;
+			helper.probes.computeBoundingSphere();
 
 		}
 
-		attribute.needsUpdate = true;
-		this.current.visible = cell >= 0;
-
 	}
+
+}
+
+/** A raycast against the ball of radius `radius` around `handle`. */
+function hitBall( handle: THREE.Object3D, radius: number, raycaster: THREE.Raycaster, intersects: THREE.Intersection[] ): void {
+
+	_sphere.set( handle.getWorldPosition( _hit ), radius );
+	if ( raycaster.ray.intersectSphere( _sphere, _hit ) === null ) return;
+	const distance = raycaster.ray.origin.distanceTo( _hit );
+	if ( distance < raycaster.near || distance > raycaster.far ) return;
+	intersects.push( { distance, point: _hit.clone(), object: handle } );
 
 }
