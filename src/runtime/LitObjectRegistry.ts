@@ -1,5 +1,6 @@
 import type { Object3D } from 'three';
 import { assertOptions } from '../validate.js';
+import { describeObject } from './chooseLighting.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import {
 	EXPLICIT_SCOPE, assertObject3D, checkAddOptions, createLitObject, disposeLitObject, reportBadBlend, updateLitObject,
@@ -132,13 +133,26 @@ export class LitObjectRegistry {
 
 	/**
 	 * One object in mode 'object', 'vertex' or 'texture'. An entry `add( scene )` made for it, or
-	 * for objects below it, gives way (they are restored when this registration fails).
+	 * for objects below it, gives way (they are restored when this registration fails); one that
+	 * covers it as part of a larger object (a marked group, a rig) does not: that is an Error.
 	 */
 	private addObject( object: Object3D, options: AddOptions, fixedZone: number ): void {
 
 		const existing = this.find( object );
 		if ( existing && existing.root === null ) return;
 		checkAddOptions( options );
+		for ( let node = object.parent; node !== null; node = node.parent ) {
+
+			const cover = this.find( node );
+			if ( cover?.root && cover.subtree ) {
+
+				throw new Error( `LightProbeVolume.add: ${describeObject( object )} is lit as part of ${describeObject( node )} (one `
+					+ `'${cover.lighting}' object of add( scene )); remove( that object ) first, or mark the objects below it instead.` );
+
+			}
+
+		}
+
 		const yielded = this.lit.filter( ( entry ) => entry.root !== null && isWithin( entry.object, object ) );
 		const restore = yielded.map( ( entry ) => ( { entry, options: entry.options } ) );
 		for ( const entry of yielded ) this.drop( this.lit.indexOf( entry ) );

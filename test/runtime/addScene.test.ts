@@ -372,6 +372,23 @@ describe( 'volume.add( scene ): the choice per mesh', () => {
 		group.add( l.hero.root );
 		expect( () => volume.add( l.scene ) ).toThrow( /is marked 'object', but .* below it is already lit by this volume/ );
 		expect( volume.getLighting( l.floor ) ).toBeNull();
+		// add( object ) of a mesh that add( scene ) lights as part of a rig: an Error, nothing changed.
+		volume.remove( l.hero.mesh );
+		group.userData.probeLighting = 'auto';
+		volume.add( l.scene );
+		const heroUniforms = volume.getUniforms( l.hero.root );
+		expect( () => volume.add( l.hero.mesh ) ).toThrow( /^LightProbeVolume\.add: \(SkinnedMesh .*\) is lit as part of "hero"/ );
+		expect( volume.getUniforms( l.hero.root ) ).toBe( heroUniforms );
+		expect( volume.getUniforms( l.hero.mesh ) ).toBeNull();
+		const notObjects = [
+			() => volume.getLighting( 5 as never ), () => volume.remove( null as never ), () => volume.add( {} as never ),
+		];
+		for ( const call of notObjects ) {
+
+			expect( call ).toThrow( /^LightProbeVolume\.(getLighting|remove|add): object must be a three\.js Object3D/ );
+
+		}
+
 		volume.dispose();
 
 	} );
