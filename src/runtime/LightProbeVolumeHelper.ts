@@ -33,6 +33,7 @@ const SIZE_PER_SPACING = 0.15;
  */
 export class LightProbeVolumeHelper extends Object3D {
 
+	/** 'LightProbeVolumeHelper', to find the helper in a scene. */
 	override readonly type: string = 'LightProbeVolumeHelper';
 
 	/** The volume drawn. */
@@ -113,10 +114,11 @@ export class LightProbeVolumeHelper extends Object3D {
 
 	/**
 	 * Highlights the cell `target` is lit from, found again before every render: for an object,
-	 * the probes blended at its bounding-box centre (where `volume.add()` samples it) in the zone
-	 * the volume used for it at the last `update()` — a tetrahedron, the hull triangle of an outer
-	 * cell, a triangle or a segment, or a grid box; for a position (`{ x, y, z }` such as a
-	 * `Vector3`, or `[ x, y, z ]`, read by reference), the cell there. null turns it off.
+	 * the probes blended at its bounding-box centre (where `volume.add()` samples it, unless given
+	 * an `anchor`) in the zone the volume used for it at the last `update()` — a tetrahedron, the
+	 * hull triangle of an outer cell, a triangle or a segment, or a grid box; for a position
+	 * (`{ x, y, z }` such as a `Vector3`, or `[ x, y, z ]`, read by reference), the cell there.
+	 * null turns it off.
 	 * @throws TypeError for another kind of target (the highlight then stays as it was).
 	 */
 	highlight( target: HighlightTarget ): this {

@@ -107,10 +107,9 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 	/** Finds the target's cell and writes its edges when it changed. Allocation-free. */
 	refresh(): void {
 
-		const previous = this.probeCount;
 		const changed = this.locate();
 		const positions = this.volume.positions;
-		if ( ! changed && previous === this.probeCount && positions === this.drawnPositions ) return;
+		if ( ! changed && positions === this.drawnPositions ) return;
 		this.drawnPositions = positions;
 		this.writeEdges( positions );
 
@@ -182,7 +181,8 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 
 		}
 
-		return this.setCell( n );
+		// A custom interpolator blending more probes than a tetrahedron: its first 4 are drawn.
+		return this.setCell( Math.min( n, 4 ) );
 
 	}
 

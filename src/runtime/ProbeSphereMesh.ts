@@ -41,6 +41,7 @@ export class ProbeSphereMesh extends InstancedMesh<SphereGeometry, ShaderMateria
 	private shBuffer: InstancedInterleavedBuffer;
 	private hiddenCount = - 1;
 
+	/** A unit sphere with the SH shader; no instances until {@link ProbeSphereMesh.setProbes}. */
 	constructor() {
 
 		const material = new ShaderMaterial( { vertexShader: probeVolumeHelperVert, fragmentShader: probeVolumeHelperFrag } );

@@ -209,6 +209,24 @@ describe.skipIf( ! ctx.renderer )( `LightProbeVolumeHelper on a real GL context 
 
 	} );
 
+	it( 'update() after new SH (same probe count): the next render shows them (the buffers are updated in place)', () => {
+
+		const volume = cubeVolume();
+		const helper = new LightProbeVolumeHelper( volume, RADIUS );
+		helper.tetrahedra = false;
+		const scene = new THREE.Scene().add( helper );
+		const { x, y, offset } = pixelAt( new THREE.Vector3().fromArray( CUBE, 0 ), view );
+		const red = expectedColor( CUBE_SH, 0, normalThrough( offset, RADIUS, view ) );
+		expect( largestDifference( pixel( renderToImage( renderer, gl, scene, view ), x, y ), red ) ).toBeLessThanOrEqual( 2 ); // as captured first
+		const green = probeSH( [ 0, 0.5, 0 ], { y: [ 0, 0.2, 0 ] } );
+		volume.sh.set( green, 0 ); // probe 0 captured again, say
+		helper.update();
+		const expected = expectedColor( green, 0, normalThrough( offset, RADIUS, view ) );
+		expect( largestDifference( pixel( renderToImage( renderer, gl, scene, view ), x, y ), expected ) ).toBeLessThanOrEqual( 2 );
+		helper.dispose();
+
+	} );
+
 	it( 'the highlight is drawn in yellow over the cell\'s edges, the wireframe faint grey', () => {
 
 		const volume = cubeVolume();
