@@ -2,6 +2,8 @@ import { assertFinite, assertInteger, assertNumber, assertPoints, assertSH, asse
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import { hilbertIndex3, mulberry32 } from '../tetrahedra/spatialOrder.js';
 import { boundsOf } from '../geometry/boundsOf.js';
+import { bestInsertion } from './bestInsertion.js';
+import { completeSpan } from './completeSpan.js';
 import {
 	IRRADIANCE_ERROR_NORMALS, blendRows, irradianceAtNormals, irradianceErrorScale, pointIrradianceError, summarizeErrors,
 	type IrradianceErrorSummary,
@@ -38,6 +40,17 @@ export interface ReduceProbesOptions {
 	/** Directions the error is measured in (default the 26 of {@link IRRADIANCE_ERROR_NORMALS}). */
 	normals?: ArrayLike<number>;
 
+	/**
+	 * Which probe each step inserts: `'worst'` (default) the one predicted worst — fast; `'mean'`
+	 * the one, of the `trials` predicted worst, whose insertion lowers the mean error most — about
+	 * `trials` times slower, and better layouts where one bright spot (a lamp) would draw every
+	 * insertion to itself (figures in docs/placement.md).
+	 */
+	strategy?: 'worst' | 'mean';
+
+	/** Candidates tried per step by `strategy: 'mean'` (an integer ≥ 1, default 16). */
+	trials?: number;
+
 }
 
 /** Result of {@link reduceProbes}. */
@@ -45,6 +58,9 @@ export interface ReduceProbesResult {
 
 	/** Indices into the dense set of the chosen probes, ascending: an ordinary layout to keep editing. */
 	keep: Uint32Array;
+
+	/** Positions of the chosen probes, x, y, z each, in `keep` order: `new LightProbeVolume( { positions } )`. */
+	positions: Float64Array;
 
 	/**
 	 * The same indices in the order they were chosen: the starting set (`keep` option, spanning
@@ -128,6 +144,14 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 
 	}
 
+	const strategy = options.strategy ?? 'worst', trials = options.trials ?? 16;
+	if ( strategy !== 'worst' && strategy !== 'mean' ) {
+
+		throw new RangeError( `${where}: options.strategy must be 'worst' or 'mean', got ${JSON.stringify( strategy )}.` );
+
+	}
+
+	assertInteger( where, 'options.trials', trials, 1 );
 	const normals = options.normals ?? IRRADIANCE_ERROR_NORMALS;
 	const directions = assertPoints( where, 'options.normals', normals, 1 );
 	const required = readKeep( where, options.keep, count );
@@ -225,6 +249,15 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 		if ( targetCount !== undefined && size >= targetCount ) break;
 		if ( size === count ) break;
 
+		if ( strategy === 'mean' ) {
+
+			// No probe left out has any error: no insertion can help (see below).
+			if ( maxLeftOut( perPoint, selected ) <= 0 ) break;
+			add( bestInsertion( { points, truth, stride: tableStride, scale, visitOrder, rank }, order, selected, perPoint, trials ) );
+			continue;
+
+		}
+
 		// The worst probe not yet in the subset; ties go to the lower seeded rank.
 		let worst = - 1, worstError = - 1;
 		for ( let p = 0; p < count; p ++ ) {
@@ -248,8 +281,12 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 	}
 
 	const chosen = Uint32Array.from( order );
+	const keep = chosen.slice().sort();
+	const keptPositions = new Float64Array( 3 * keep.length );
+	keep.forEach( ( i, k ) => keptPositions.set( points.subarray( 3 * i, 3 * i + 3 ), 3 * k ) );
 	return {
-		keep: chosen.slice().sort(),
+		keep,
+		positions: keptPositions,
 		order: chosen,
 		error: summary,
 		perPoint,
@@ -258,6 +295,15 @@ export function reduceProbes( positions: ArrayLike<number>, sh: ArrayLike<number
 			p95: Float64Array.from( historyP95 ), max: Float64Array.from( historyMax ),
 		},
 	};
+
+}
+
+/** The largest error of a probe not in the subset (−1 when all are in). */
+function maxLeftOut( perPoint: Float64Array, selected: Uint8Array ): number {
+
+	let max = - 1;
+	for ( let p = 0; p < perPoint.length; p ++ ) if ( selected[ p ] === 0 && perPoint[ p ] > max ) max = perPoint[ p ];
+	return max;
 
 }
 
@@ -313,112 +359,6 @@ function boxExtremes( points: Float64Array, rank: Uint32Array ): number[] {
 	}
 
 	return out;
-
-}
-
-/**
- * The probes to add to `initial` so that together they span the dense set's dimension (a volume,
- * or an area when the whole set is flat): each new one the farthest from the affine hull of those
- * before — starting, when `initial` is empty, from the probe farthest from the bounding box's
- * centre (a corner of a box-shaped set). At most 4 probes, none when `initial` already spans.
- * @throws RangeError when the dense set lies on a line (no area or volume to interpolate over).
- */
-function completeSpan( where: string, points: Float64Array, rank: Uint32Array, initial: readonly number[] ): number[] {
-
-	const count = points.length / 3;
-	const { min, max } = boxOf( points );
-
-	// Same relative tolerance as the tetrahedralizer's duplicate and planarity tests.
-	const tolerance = 1e-9 * Math.hypot( max[ 0 ] - min[ 0 ], max[ 1 ] - min[ 1 ], max[ 2 ] - min[ 2 ] );
-	const centre = [ 0, 1, 2 ].map( ( a ) => ( min[ a ] + max[ a ] ) / 2 );
-
-	/** Affine basis of the chosen points: an origin and up to 3 orthonormal directions. */
-	let origin: number[] | null = null;
-	const basis: number[][] = [];
-	const distanceFromHull = ( p: number ): number => {
-
-		if ( origin === null ) {
-
-			return Math.hypot( points[ 3 * p ] - centre[ 0 ], points[ 3 * p + 1 ] - centre[ 1 ], points[ 3 * p + 2 ] - centre[ 2 ] );
-
-		}
-
-		const d = [ points[ 3 * p ] - origin[ 0 ], points[ 3 * p + 1 ] - origin[ 1 ], points[ 3 * p + 2 ] - origin[ 2 ] ];
-		for ( const u of basis ) {
-
-			const t = d[ 0 ] * u[ 0 ] + d[ 1 ] * u[ 1 ] + d[ 2 ] * u[ 2 ];
-			d[ 0 ] -= t * u[ 0 ]; d[ 1 ] -= t * u[ 1 ]; d[ 2 ] -= t * u[ 2 ];
-
-		}
-
-		return Math.hypot( d[ 0 ], d[ 1 ], d[ 2 ] );
-
-	};
-
-	/** Adds p to the affine hull when it lies off it (Gram–Schmidt on its offset from the origin). */
-	const extend = ( p: number ): boolean => {
-
-		if ( origin === null ) {
-
-			origin = [ points[ 3 * p ], points[ 3 * p + 1 ], points[ 3 * p + 2 ] ];
-			return true;
-
-		}
-
-		const d = [ points[ 3 * p ] - origin[ 0 ], points[ 3 * p + 1 ] - origin[ 1 ], points[ 3 * p + 2 ] - origin[ 2 ] ];
-		for ( const u of basis ) {
-
-			const t = d[ 0 ] * u[ 0 ] + d[ 1 ] * u[ 1 ] + d[ 2 ] * u[ 2 ];
-			d[ 0 ] -= t * u[ 0 ]; d[ 1 ] -= t * u[ 1 ]; d[ 2 ] -= t * u[ 2 ];
-
-		}
-
-		const length = Math.hypot( d[ 0 ], d[ 1 ], d[ 2 ] );
-		if ( ! ( length > tolerance ) ) return false;
-		basis.push( [ d[ 0 ] / length, d[ 1 ] / length, d[ 2 ] / length ] );
-		return true;
-
-	};
-
-	// The dimension the given probes already span: each extends the hull if it lies off it. One
-	// pass suffices for a basis, not for the farthest choice, which only the added probes need.
-	for ( const p of initial ) if ( basis.length < 3 ) extend( p );
-
-	const added: number[] = [];
-	while ( basis.length < 3 ) {
-
-		// The farthest from the hull; among near-ties (a box's whole face is equally far from a plane
-		// through its diagonal) the one farthest from the centre — a corner — then the seeded rank.
-		let farthest = 0;
-		for ( let p = 0; p < count; p ++ ) farthest = Math.max( farthest, distanceFromHull( p ) );
-		let best = - 1, bestCentre = - 1;
-		for ( let p = 0; p < count; p ++ ) {
-
-			if ( distanceFromHull( p ) < farthest * ( 1 - 1e-9 ) ) continue;
-			const c = Math.hypot( points[ 3 * p ] - centre[ 0 ], points[ 3 * p + 1 ] - centre[ 1 ], points[ 3 * p + 2 ] - centre[ 2 ] );
-			if ( c > bestCentre * ( 1 + 1e-9 ) || ( c >= bestCentre * ( 1 - 1e-9 ) && rank[ p ] < rank[ best ] ) ) {
-
-				best = p;
-				bestCentre = c;
-
-			}
-
-		}
-
-		// Nothing off the hull: the set spans no more dimensions. (A probe of `initial` lies on the
-		// hull, so `best` is always a new one.)
-		if ( ! extend( best ) ) break;
-		added.push( best );
-
-	}
-
-	if ( basis.length < 2 ) {
-
-		throw new RangeError( `${where}: positions lie on one line (or in one point); probes must span an area or a volume to be interpolated.` );
-
-	}
-
-	return added;
 
 }
 
