@@ -27,7 +27,9 @@ const _v = new Vector3();
  * Normals are transformed by the inverse transpose (correct under non-uniform scale and mirroring)
  * and normalised. A geometry without a `normal` attribute gets area-weighted face normals
  * accumulated per vertex. Skinned and morphed meshes are read in their bind pose; `drawRange` is
- * respected, material groups are not needed.
+ * respected, material groups are not needed. Helpers — objects whose `type` ends in `Helper`, such as
+ * three's `LightProbeHelper` or this library's `LightProbeVolumeHelper` — are skipped with their
+ * children: they are drawn for the user, not part of the level, and must not block probes.
  */
 export function gatherWorldGeometry( root: Object3D ): WorldGeometry {
 
@@ -42,7 +44,7 @@ export function gatherWorldGeometry( root: Object3D ): WorldGeometry {
 	// First pass: sizes, so the output is three typed arrays filled once.
 	const meshes: Mesh[] = [];
 	let vertexCount = 0, triangleCount = 0;
-	root.traverse( ( object ) => {
+	traverseSceneGeometry( root, ( object ) => {
 
 		const mesh = object as Mesh;
 		if ( mesh.isMesh !== true || ( mesh as unknown as { isBatchedMesh?: boolean } ).isBatchedMesh === true ) return;
@@ -166,5 +168,14 @@ function normalizeRange( normals: Float64Array, first: number, count: number ): 
 		}
 
 	}
+
+}
+
+/** `object.traverse`, without the subtrees of helpers (see {@link gatherWorldGeometry}). */
+function traverseSceneGeometry( object: Object3D, callback: ( object: Object3D ) => void ): void {
+
+	if ( typeof object.type === 'string' && object.type.endsWith( 'Helper' ) ) return;
+	callback( object );
+	for ( const child of object.children ) traverseSceneGeometry( child, callback );
 
 }
