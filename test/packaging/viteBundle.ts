@@ -19,14 +19,19 @@ export interface ViteBundle {
 
 }
 
-/** How the package's own modules are treated: by its package.json `sideEffects` claim (what a bundler does), or analysed by Rollup. */
-export type SideEffectsMode = 'package.json' | 'analysed';
+/**
+ * How the package's own modules are treated: by its package.json `sideEffects` claim applied to the
+ * aliased sources ('package.json'), analysed by Rollup ('analysed'), or as Vite treats an installed
+ * package ('installed': no aliases, the package resolved from `root`'s node_modules).
+ */
+export type SideEffectsMode = 'package.json' | 'analysed' | 'installed';
 
 /**
  * Bundles `code` as an app entry with Vite's build API (minified, tree-shaken, nothing written),
  * `three-capture-lighting` and its subpaths resolved to the repository's `src/` by the same
- * aliases as the examples. `three` is external unless `bundleThree`.
- * @param root The repository.
+ * aliases as the examples (or, with sideEffects 'installed', from `root`'s node_modules). `three`
+ * is external unless `bundleThree`.
+ * @param root The repository, or the project the package is installed in.
  */
 export async function viteBundle(
 	root: string, code: string, options: { bundleThree: boolean; sideEffects: SideEffectsMode },
@@ -34,7 +39,8 @@ export async function viteBundle(
 
 	const { build } = await import( 'vite' );
 	const src = resolve( root, 'src' ) + sep;
-	const claim = JSON.parse( readFileSync( resolve( root, 'package.json' ), 'utf8' ) ).sideEffects;
+	const installed = options.sideEffects === 'installed';
+	const claim = installed ? undefined : JSON.parse( readFileSync( resolve( root, 'package.json' ), 'utf8' ) ).sideEffects;
 	// An installed package's modules get its package.json claim from the bundler; the aliased
 	// sources would not, so the claim is applied here by hand, or left out to let Rollup analyse them.
 	const moduleSideEffects = ( id: string ) => ! id.startsWith( src ) || ( options.sideEffects === 'analysed' ? true : claim !== false );
@@ -43,7 +49,7 @@ export async function viteBundle(
 		configFile: false,
 		root,
 		logLevel: 'silent',
-		resolve: { alias: libraryAliases( root ) },
+		resolve: { alias: installed ? [] : libraryAliases( root ) },
 		plugins: [ {
 			name: 'bundle-entry',
 			resolveId: ( id ) => ( id === 'bundle-entry' ? entry : null ),
@@ -56,7 +62,7 @@ export async function viteBundle(
 			rollupOptions: {
 				input: 'bundle-entry',
 				external: options.bundleThree ? [] : [ /^three($|\/)/ ],
-				treeshake: { moduleSideEffects },
+				treeshake: installed ? {} : { moduleSideEffects },
 			},
 		},
 	} ) as Rollup.RollupOutput | Rollup.RollupOutput[];
