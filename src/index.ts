@@ -14,8 +14,14 @@
 export { LightProbeVolume } from './runtime/LightProbeVolume.js';
 export type {
 	AddOptions, AddProbeOptions, LightProbeVolumeBounceOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters,
-	ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
+	ProbeLighting, ProbeLightingChoice, ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
 } from './runtime/LightProbeVolumeOptions.js';
+export { LightProbeVolumeLoader } from './runtime/LightProbeVolumeLoader.js';
+export type { LightProbeVolumeData, BakedVolumeParameters } from './runtime/LightProbeVolumeLoader.js';
+export { LightProbeVolumeExporter } from './runtime/LightProbeVolumeExporter.js';
+export type {
+	LightProbeVolumeExporterOptions, LightProbeVolumeBinaryOptions, LightProbeVolumeJSONOptions,
+} from './runtime/LightProbeVolumeExporter.js';
 export { captureBounces } from './runtime/captureBounces.js';
 export type { CaptureBouncesOptions, CaptureBouncesResult, BouncePass } from './runtime/captureBounces.js';
 export { VisibilityGuard } from './runtime/VisibilityGuard.js';

@@ -5,6 +5,7 @@ import { CAPTURE_ACCESS, applyCapturedProbes, captureProbes, type CaptureAccess,
 import { checkCaptureOptions } from './checkCaptureOptions.js';
 import type { LightProbeVolume } from './LightProbeVolume.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
+import type { ProbeField } from './ProbeField.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
 import { getProbeVolumeUniforms } from './patchMaterial.js';
 
@@ -163,10 +164,10 @@ export async function captureWithBounces(
 	// The SH as the passes make them; the volume gets the last pass once every pass is done.
 	const staged = new Float32Array( volume.sh );
 	let last: CapturedProbes | null = null;
-	const captureAndMeasure = async ( pass: number, lightingMs: number ) => {
+	const captureAndMeasure = async ( pass: number, lightingMs: number, scenery: ProbeField | null = null ) => {
 
 		const captureStart = now();
-		last = await captureProbes( volume, access.lit, indices, renderer, scene, checked );
+		last = await captureProbes( volume, access.lit, indices, renderer, scene, checked, scenery );
 		applyCapturedProbes( last, staged );
 		passes.push( { pass, meanL00: meanL00( staged, capture.indices ), captureMs: now() - captureStart, lightingMs } );
 		onPass?.( pass, staged );
@@ -175,7 +176,8 @@ export async function captureWithBounces(
 
 	await captureAndMeasure( 0, 0 );
 	const vertices = meshes.reduce( ( sum, mesh ) => sum + ( mesh.geometry.getAttribute( 'position' )?.count ?? 0 ), 0 );
-	if ( bounces > 0 && meshes.length > 0 ) {
+	// Scenery the volume lights itself (add( scene ), large objects) takes the bounce through its own lighting.
+	if ( bounces > 0 && ( meshes.length > 0 || access.lit.some( ( entry ) => ! entry.hidden ) ) ) {
 
 		await bouncePasses( meshes, hidden, volume.interpolator, staged, output, bounces, captureAndMeasure );
 
@@ -193,7 +195,7 @@ export async function captureWithBounces(
  */
 async function bouncePasses(
 	meshes: Mesh[], hidden: Object3D[], interpolator: ProbeInterpolator, staged: Float32Array, output: 'irradiance' | 'sh',
-	bounces: number, captureAndMeasure: ( pass: number, lightingMs: number ) => Promise<void>,
+	bounces: number, captureAndMeasure: ( pass: number, lightingMs: number, scenery: ProbeField ) => Promise<void>,
 ): Promise<void> {
 
 	const field = { interpolator, sh: new Float32Array( staged ) };
@@ -226,7 +228,7 @@ async function bouncePasses(
 
 			}
 
-			await captureAndMeasure( pass, now() - lightingStart );
+			await captureAndMeasure( pass, now() - lightingStart, field );
 
 		}
 

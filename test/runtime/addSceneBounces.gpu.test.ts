@@ -14,6 +14,7 @@
 
 import { afterAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
+import { captureBounces } from '../../src/runtime/captureBounces.js';
 import { CAPTURE_ACCESS, captureProbes } from '../../src/runtime/captureProbes.js';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
@@ -94,6 +95,30 @@ describe.skipIf( ! ctx.renderer )( `scenery of add( scene ) in a bounce pass (he
 			expect( l00Error( direct.sh, [ 0, 1, 2 ].map( () => UNIFORM_L00 * LE ) ) ).toBeLessThan( 1e-3 );
 			// The volume's own (black) probe light is back on the room: resampled from the volume.
 			expect( after ).toEqual( before );
+			volume.dispose();
+			disposeMesh( room );
+			disposeMesh( prop );
+
+		} );
+
+	}
+
+	for ( const segments of [ 12, 1 ] ) {
+
+		it( `add( scene ) then capture( { bounces: 2 } ), the furnace lit ${segments === 1 ? 'from a 3D texture' : 'per vertex'}: pass k captures √(4π)·Le·(1 + ρ + … + ρ^k)`, async () => {
+
+			const { scene, room, prop } = furnaceScene( segments );
+			const volume = new LightProbeVolume( { positions: PROBES } );
+			volume.add( scene );
+			const { passes } = await captureBounces( volume, renderer, scene, { bounces: 2, resolution: 16, near: 0.05, far: 100 } );
+			expect( passes.length ).toBe( 3 );
+			passes.forEach( ( pass, k ) => {
+
+				const expected = ALBEDO.map( ( rho ) => UNIFORM_L00 * LE * ( 1 - rho ** ( k + 1 ) ) / ( 1 - rho ) );
+				// Measured (llvmpipe): 3e-7, 6.5e-4, 6.0e-4 per vertex; 3e-7, 6.5e-4, 9.0e-4 from the texture.
+				for ( let c = 0; c < 3; c ++ ) expect( Math.abs( pass.meanL00[ c ] - expected[ c ] ) / expected[ c ] ).toBeLessThan( 2e-3 );
+
+			} );
 			volume.dispose();
 			disposeMesh( room );
 			disposeMesh( prop );
