@@ -53,7 +53,8 @@ describe.skipIf( skipReason !== '' )( `a fresh project installs the packed packa
 		mkdirSync( folder );
 		for ( const name of [ 'package.json', 'README.md', 'LICENSE', 'docs' ] ) cpSync( resolve( ROOT, name ), join( folder, name ), { recursive: true } );
 		expectOk( run( process.execPath, [ resolve( ROOT, 'scripts/build.mjs' ), '--out', join( folder, 'dist' ) ], ROOT ), 'scripts/build.mjs' );
-		const pack = run( 'npm', [ 'pack', folder, '--pack-destination', work, '--json', '--silent' ], work );
+		// --ignore-scripts: the copy has no scripts/ for package.json's prepack (the build just ran).
+		const pack = run( 'npm', [ 'pack', folder, '--pack-destination', work, '--json', '--silent', '--ignore-scripts' ], work );
 		expectOk( pack, 'npm pack' );
 		packed = JSON.parse( pack.stdout )[ 0 ];
 
