@@ -1,7 +1,8 @@
 /**
  * Probe placement from meshes: placeFromMeshes on a 100k-triangle mesh (gather the world geometry,
- * candidates from its vertices, TriangleBVH, near-surface and ray-parity classification), and the
- * classification alone, with its TriangleBVH versus testing every triangle, on a smaller mesh.
+ * candidates from its vertices, TriangleBVH, near-surface and inside classification), and the
+ * classification alone on a smaller mesh — with its TriangleBVH versus the same rule on every
+ * triangle, and versus the ray-parity vote it replaced (issue 13).
  */
 
 import * as THREE from 'three';
@@ -11,6 +12,9 @@ import { classifyPoints, INSIDE_GEOMETRY, NEAR_SURFACE, OPEN_SPACE, INSIDE_RAY_D
 import { gatherWorldGeometry } from '../src/geometry/gatherWorldGeometry.js';
 import { closestPointOnTriangle } from '../src/geometry/closestPointOnTriangle.js';
 import { intersectRayTriangle } from '../src/geometry/intersectRayTriangle.js';
+import { findClosedShells } from '../src/geometry/findClosedShells.js';
+import { facing } from '../src/geometry/windingAlongRay.js';
+import { TriangleBVH } from '../src/geometry/TriangleBVH.js';
 import { timeRuns } from './stats.js';
 import type { BenchRow } from './types.js';
 
@@ -18,12 +22,17 @@ export const title = 'Probe placement from meshes (ms, lower is better)';
 
 export const notes = [
 	'placeFromMeshes: a TorusKnotGeometry( 1, 0.3, 1000, 50 ) mesh (100,000 triangles) with offset 0.1 and minSpacing 0.06 — '
-	+ 'world geometry, vertex candidates, TriangleBVH, then near-surface (minDistance 0.05) and ray-parity classification; '
+	+ 'world geometry, drawn sides, vertex candidates, TriangleBVH, then near-surface (minDistance 0.05) and inside classification; '
 	+ 'median / min / max of the runs after warm-up. Check: more than 3,000 candidates kept. Target (printed, not asserted): ≤ 5 s.',
 	'classifyPoints: vertex candidates of a TorusKnotGeometry( 1, 0.3, 100, 20 ) mesh (4,000 triangles) moved 0.1 out, 0.1 in '
 	+ '(inside the tube) and 0.025 out (near the surface), minSpacing 0.06 per set, classified by classifyPoints (its TriangleBVH '
-	+ 'built inside the call) and by a brute-force peer running the same tests (closest point, Möller–Trumbore, 7-ray majority '
-	+ 'vote with the same early stop) on every triangle. Ratio: ours ÷ brute force. Check: the same class for every candidate.',
+	+ 'built inside the call) and by a brute-force peer running the same tests (closest point, closed shells, 7-ray majority '
+	+ 'vote of winding number and first hit with the same early stop) on every triangle. Ratio: ours ÷ brute force. Check: '
+	+ 'the same class for every candidate.',
+	'Inside test vs ray parity (issue 13): the same candidates classified by classifyPoints and by the vote it replaced '
+	+ '(inside when most of the 7 rays cross the triangles an odd number of times, TriangleBVH.countCrossings), each building '
+	+ 'its TriangleBVH in the call. Ratio: the new test ÷ parity (the cost of welding corners, finding closed shells and '
+	+ 'tracking first hits). Check: the same classes on this closed mesh, where both rules are right.',
 ];
 
 const OFFSET = 0.1, MIN_SPACING = 0.06, MIN_DISTANCE = OFFSET / 2;
@@ -64,8 +73,49 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 		peer: 'brute force', ratio: ours.summary.median / brute.summary.median,
 	} );
 	rows.push( { case: name, subject: 'brute force (every triangle)', unit: 'ms', ...brute.summary, output: classCounts( brute.result ) } );
+
+	log( 'inside test vs ray parity, 4k triangles …' );
+	const parity = timeRuns( () => classifyByParity( points, small.triangles, MIN_DISTANCE ), 50, 3000 );
+	const agree = ours.result.every( ( c, i ) => c === parity.result[ i ] );
+	rows.push( {
+		case: name, subject: 'ours, classifyPoints (inside test)', unit: 'ms', ...ours.summary, output: classCounts( ours.result ),
+		status: agree ? 'same classes as parity' : 'DIFFERS from parity', peer: 'ray parity (before issue 13)',
+		ratio: ours.summary.median / parity.summary.median,
+	} );
+	rows.push( { case: name, subject: 'ray parity (before issue 13)', unit: 'ms', ...parity.summary, output: classCounts( parity.result ) } );
 	material.dispose();
 	return rows;
+
+}
+
+/** The classification before issue 13: near-surface test, then a 7-ray majority vote of crossing parity, on a TriangleBVH. */
+function classifyByParity( points: Float64Array, triangles: Float64Array, minDistance: number ): Uint8Array {
+
+	const bvh = new TriangleBVH( triangles ), d = INSIDE_RAY_DIRECTIONS, rays = d.length / 3;
+	const classes = new Uint8Array( points.length / 3 );
+	for ( let i = 0; i < classes.length; i ++ ) {
+
+		const x = points[ 3 * i ], y = points[ 3 * i + 1 ], z = points[ 3 * i + 2 ];
+		if ( bvh.anyWithin( x, y, z, minDistance ) ) {
+
+			classes[ i ] = NEAR_SURFACE;
+			continue;
+
+		}
+
+		let odd = 0;
+		for ( let r = 0; r < rays; r ++ ) {
+
+			if ( bvh.countCrossings( x, y, z, d[ 3 * r ], d[ 3 * r + 1 ], d[ 3 * r + 2 ] ) % 2 === 1 ) odd ++;
+			if ( 2 * odd > rays || 2 * ( r + 1 - odd ) >= rays ) break;
+
+		}
+
+		classes[ i ] = 2 * odd > rays ? INSIDE_GEOMETRY : OPEN_SPACE;
+
+	}
+
+	return classes;
 
 }
 
@@ -74,6 +124,7 @@ function classifyBruteForce( points: Float64Array, triangles: Float64Array, minD
 
 	const count = points.length / 3, triangleCount = triangles.length / 9, rays = INSIDE_RAY_DIRECTIONS.length / 3;
 	const d = INSIDE_RAY_DIRECTIONS, r2 = minDistance * minDistance, scratch = new Float64Array( 6 );
+	const orientation = findClosedShells( triangles, new Int8Array( triangleCount ).fill( 1 ) ).orientation;
 	const classes = new Uint8Array( count );
 	for ( let i = 0; i < count; i ++ ) {
 
@@ -96,22 +147,33 @@ function classifyBruteForce( points: Float64Array, triangles: Float64Array, minD
 
 		}
 
-		let odd = 0;
+		let inside = 0;
 		for ( let r = 0; r < rays; r ++ ) {
 
-			let crossings = 0;
+			// InsideTest's vote: the winding number over the closed shells > 0, or a first hit on an undrawn side (all drawn front here).
+			const dx = d[ 3 * r ], dy = d[ 3 * r + 1 ], dz = d[ 3 * r + 2 ];
+			let winding = 0, nearest = Infinity, first = - 1;
 			for ( let t = 0; t < triangleCount; t ++ ) {
 
-				if ( intersectRayTriangle( triangles, t, x, y, z, d[ 3 * r ], d[ 3 * r + 1 ], d[ 3 * r + 2 ] ) > 0 ) crossings ++;
+				const hit = intersectRayTriangle( triangles, t, x, y, z, dx, dy, dz );
+				if ( hit <= 0 ) continue;
+				if ( hit < nearest ) {
+
+					nearest = hit;
+					first = t;
+
+				}
+
+				if ( orientation[ t ] !== 0 ) winding += facing( triangles, t, dx, dy, dz ) > 0 ? orientation[ t ] : - orientation[ t ];
 
 			}
 
-			if ( crossings % 2 === 1 ) odd ++;
-			if ( 2 * odd > rays || 2 * ( r + 1 - odd ) >= rays ) break;
+			if ( winding > 0 || ( first >= 0 && facing( triangles, first, dx, dy, dz ) > 0 ) ) inside ++;
+			if ( 2 * inside > rays || 2 * ( r + 1 - inside ) >= rays ) break;
 
 		}
 
-		classes[ i ] = 2 * odd > rays ? INSIDE_GEOMETRY : OPEN_SPACE;
+		classes[ i ] = 2 * inside > rays ? INSIDE_GEOMETRY : OPEN_SPACE;
 
 	}
 

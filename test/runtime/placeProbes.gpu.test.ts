@@ -12,6 +12,8 @@ import { placeProbes, type PlaceProbesResult } from '../../src/runtime/placeProb
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { ProbeCapturer } from '../../src/capture/ProbeCapturer.js';
 import { irradianceError } from '../../src/placement/irradianceError.js';
+import { placeFromMeshes } from '../../src/placement/placeFromMeshes.js';
+import { reduceProbes } from '../../src/placement/reduceProbes.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance } from '../placement/helpers.js';
@@ -171,6 +173,36 @@ describe.skipIf( ! ctx.renderer )( `placeProbes: the placement recipe on headles
 			volume.dispose();
 
 		} );
+
+	} );
+
+	it( 'the step-by-step recipe of docs/placement.md, as written there, on a tessellated Basic room: 32 probes in the room', async () => {
+
+		const { room: level } = basicRoom( 8 );
+		const scene = new THREE.Scene().add( level );
+		const spawn = new THREE.Vector3( 0, 1.6, 0 );
+		// --- docs/placement.md, "Step by step" ---
+		const candidates = placeFromMeshes( level, { offset: 0.3, minSpacing: 0.5, reachableFrom: [ spawn ] } );
+		const dense = new LightProbeVolume( { positions: candidates } );
+		await dense.capture( renderer, scene, { resolution: 16 } );
+		const { positions } = reduceProbes( candidates, dense.sh, { targetCount: 32, strategy: 'mean' } );
+		dense.dispose();
+		const volume = new LightProbeVolume( { positions } );
+		await volume.capture( renderer, scene, { resolution: 64 } );
+		// ---
+		expect( candidates.length / 3 ).toBeGreaterThan( 100 );
+		expect( volume.count ).toBe( 32 );
+		for ( let i = 0; i < positions.length; i += 3 ) {
+
+			// In the room, half the offset or more from the walls (placeFromMeshes' default minDistance).
+			const inside = - boxDistance( positions[ i ], positions[ i + 1 ], positions[ i + 2 ], 0, 1.5, 0, 2, 1.5, 2 );
+			expect( inside ).toBeGreaterThanOrEqual( 0.15 - 1e-9 );
+
+		}
+
+		// Captured: the lamp lights every probe (L00 > 0 in every channel).
+		for ( let p = 0; p < 32; p ++ ) for ( let c = 0; c < 3; c ++ ) expect( volume.sh[ 27 * p + c ] ).toBeGreaterThan( 0 );
+		volume.dispose();
 
 	} );
 
