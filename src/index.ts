@@ -43,7 +43,10 @@ export { ProbeVolumeTexture } from './runtime/ProbeVolumeTexture.js';
 export type { ProbeVolumeTextureOptions, BoundsLike } from './runtime/ProbeVolumeTexture.js';
 export type { ProbeField } from './runtime/ProbeField.js';
 
-// Probe placement.
+// Probe placement: one call (placeProbes), or the steps it runs.
+export { placeProbes } from './runtime/placeProbes.js';
+export type { PlaceProbesOptions, PlaceProbesResult } from './runtime/placeProbes.js';
+export type { PointList } from './placement/readPointList.js';
 export { placeGrid } from './placement/placeGrid.js';
 export { placeFromMeshes } from './placement/placeFromMeshes.js';
 export type { PlaceFromMeshesOptions } from './placement/placeFromMeshes.js';
