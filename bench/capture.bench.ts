@@ -9,28 +9,35 @@
  *    `LightProbeGridWebGL.bake`, at 8², 32², 128², same positions, near and far.
  * 3. Frame time with 500 moving spheres: ours (`LightProbeVolume.update()` + render) vs one
  *    global `THREE.LightProbe`, vs no probe, vs three's per-pixel `LightProbeGridWebGL`.
+ * 4. Capture with a shadow-casting light (page bench/pages/captureShadows.ts): the demo's Basic room
+ *    with its lamp casting shadows vs the same room without, and Sponza with its shadowed sun vs
+ *    without; a diagnostic row redraws the shadow maps per cube face, as captures did before.
  *
  * The page is bench/pages/capture.ts, served by a Vite dev server started here; puppeteer calls
  * its functions and this file summarises their raw timings. Every timing ends in a GPU → CPU
  * read-back that depends on the timed work.
  *
  *   npm run bench -- capture            (BENCH_QUICK=1: a smoke run with few repetitions;
- *                                        BENCH_CAPTURE_PARTS=frames: only some of the three parts)
+ *                                        BENCH_CAPTURE_PARTS=frames,shadows: only some of the parts)
  */
 
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { CHROMIUM_ARGS, checkChromium, launchChromium, resolveChromiumPath } from '../cli/chromium.js';
+import { libraryAliases } from '../cli/libraryAliases.js';
+import { assetsPlugin } from '../scripts/assetsPlugin.mjs';
 import type { CaptureBenchApi } from './pages/capture.js';
+import { cpuSnapshot } from './cpuSnapshot.js';
+import { captureShadows } from './captureShadows.js';
 import { summarize, type Summary } from './stats.js';
 import type { BenchRow, Target } from './types.js';
 
 const BENCH_DIR = fileURLToPath( new URL( '.', import.meta.url ) );
 const QUICK = process.env.BENCH_QUICK === '1';
-/** BENCH_CAPTURE_PARTS=projection,bake,frames (default all) runs only those parts. */
-const PARTS = ( process.env.BENCH_CAPTURE_PARTS ?? 'projection,bake,frames' ).split( ',' ).map( ( part ) => part.trim() );
+/** BENCH_CAPTURE_PARTS=projection,bake,frames,shadows (default all) runs only those parts. */
+const PARTS = ( process.env.BENCH_CAPTURE_PARTS ?? 'projection,bake,frames,shadows' ).split( ',' ).map( ( part ) => part.trim() );
 
 /** Repetitions; BENCH_QUICK=1 for a smoke run. */
 const PLAN = {
@@ -91,8 +98,15 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 		cacheDir: BENCH_DIR + 'build/vite-cache',
 		logLevel: 'warn',
 		// The page imports ../../src/index.js (relative, for the type-check); BENCH_OURS swaps it.
-		resolve: { alias: ours ? [ { find: /^\.\.\/\.\.\/src\/index\.js$/, replacement: ours } ] : [] },
-		optimizeDeps: { include: [ 'three', 'three/examples/jsm/lights/LightProbeGenerator.js', 'three/examples/jsm/lighting/LightProbeGridWebGL.js' ] },
+		// The scenes (part 4) import the package's subpaths and load their assets from /assets/.
+		resolve: { alias: [ ...( ours ? [ { find: /^\.\.\/\.\.\/src\/index\.js$/, replacement: ours } ] : [] ), ...libraryAliases( BENCH_DIR + '..' ) ] },
+		plugins: [ assetsPlugin() ],
+		optimizeDeps: {
+			include: [
+				'three', 'three/examples/jsm/lights/LightProbeGenerator.js', 'three/examples/jsm/lighting/LightProbeGridWebGL.js',
+				'three/addons/loaders/MTLLoader.js', 'three/addons/loaders/OBJLoader.js',
+			],
+		},
 		// No file watching or HMR: edits elsewhere in the repository must not reload the page mid-run.
 		server: { host: '127.0.0.1', port: 5199, strictPort: false, hmr: false, watch: null },
 	} );
@@ -125,6 +139,13 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 		if ( PARTS.includes( 'projection' ) ) await section( 'projection', pid, rows, log, () => projection( page, rows, log ) );
 		if ( PARTS.includes( 'bake' ) ) await section( 'bake', pid, rows, log, () => bake( page, rows, log ) );
 		if ( PARTS.includes( 'frames' ) ) await section( 'frames', pid, rows, log, () => frames( page, rows, log ) );
+		await page.close();
+		if ( PARTS.includes( 'shadows' ) ) {
+
+			const base = server.resolvedUrls!.local[ 0 ];
+			await section( 'shadows', pid, rows, log, () => captureShadows( browser!, base, rows, notes, errors, log ) );
+
+		}
 
 	} finally {
 
@@ -203,50 +224,6 @@ async function call<K extends keyof CaptureBenchApi>(
 		return api[ fn ]( ...fnArgs );
 
 	}, name, args as unknown[] ) as Promise<Awaited<ReturnType<CaptureBenchApi[ K ]>>>;
-
-}
-
-/** Busy CPU seconds of the whole machine and of this process + the Chromium tree, from /proc; null elsewhere. */
-function cpuSnapshot( browserPid: number | null ): { busy: number, ours: number } | null {
-
-	try {
-
-		const tick = 100; // USER_HZ on Linux
-		const fields = readFileSync( '/proc/stat', 'utf8' ).split( '\n' )[ 0 ].trim().split( /\s+/ ).slice( 1 ).map( Number );
-		const busy = ( fields.reduce( ( a, b ) => a + b, 0 ) - fields[ 3 ] - ( fields[ 4 ] ?? 0 ) ) / tick; // minus idle, iowait
-		const parents = new Map<number, number>(), times = new Map<number, number>();
-		for ( const entry of readdirSync( '/proc' ) ) {
-
-			if ( ! /^\d+$/.test( entry ) ) continue;
-			try {
-
-				const stat = readFileSync( `/proc/${entry}/stat`, 'utf8' );
-				const rest = stat.slice( stat.lastIndexOf( ')' ) + 2 ).split( ' ' );
-				parents.set( Number( entry ), Number( rest[ 1 ] ) );
-				times.set( Number( entry ), ( Number( rest[ 11 ] ) + Number( rest[ 12 ] ) ) / tick ); // utime + stime
-
-			} catch { /* exited */ }
-
-		}
-
-		const mine = new Set<number>( [ process.pid ] );
-		if ( browserPid !== null ) mine.add( browserPid );
-		for ( let grown = true; grown; ) {
-
-			grown = false;
-			for ( const [ pid, parent ] of parents ) if ( ! mine.has( pid ) && mine.has( parent ) ) { mine.add( pid ); grown = true; }
-
-		}
-
-		let ours = 0;
-		for ( const pid of mine ) ours += times.get( pid ) ?? 0;
-		return { busy, ours };
-
-	} catch {
-
-		return null;
-
-	}
 
 }
 
