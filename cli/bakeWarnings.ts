@@ -1,4 +1,4 @@
-import { formatValue, listProbes, type ShStatistics } from './shStatistics.js';
+import { formatPercent, formatValue, listProbes, type ShStatistics } from './shStatistics.js';
 
 /** What the bake knows about the scene's light sources (`inspect` has none of it). */
 export interface BakeLightFacts {
@@ -42,9 +42,11 @@ export function bakeWarnings( stats: ShStatistics, facts?: BakeLightFacts ): str
 
 	if ( stats.negative > 0 ) {
 
-		warnings.push( `${stats.negative} of ${stats.count} probes have negative irradiance (lowest E(n) ${formatValue( stats.lowestIrradiance )} `
-			+ `at probe ${stats.lowestProbe}${listProbes( stats.negativeProbes )}): ringing from a small, bright light or emitter that 9 SH `
-			+ 'coefficients cannot hold — bake with --non-negative, or --deringing 0.1 (or stronger).' );
+		warnings.push( `${stats.negative} of ${stats.count} probes have negative irradiance (E(n) down to ${formatPercent( stats.deepestRing )} `
+			+ `of the probe's mean at probe ${stats.deepestRingProbe}, lowest E(n) ${formatValue( stats.lowestIrradiance )} at probe ${stats.lowestProbe}`
+			+ `${listProbes( stats.negativeProbes )}): ringing — 9 SH coefficients cannot hold a small or sharp-edged bright light (a lamp, `
+			+ 'an emissive panel, the sun) — so surfaces facing away from it shade darker than black; bake with --non-negative, or --deringing 0.1 '
+			+ '(or stronger).' );
 
 	}
 

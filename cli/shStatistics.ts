@@ -19,8 +19,8 @@ export const BLACK_FLOOR = 1e-6;
 
 /**
  * A probe counts as negative when its lowest irradiance is below −1/256 of its mean irradiance
- * (c4 · its largest L00, or c4 · the black threshold if larger): less is not visible in an 8-bit
- * image and is what float16 storage alone leaves of a probe made non-negative.
+ * (c4 · its largest L00, or c4 · the black threshold if larger): less is what float16 storage alone
+ * leaves of a probe made non-negative (docs/cli.md).
  */
 export const NEGATIVE_FRACTION = 1 / 256;
 
@@ -53,6 +53,12 @@ export interface ShStatistics {
 
 	/** The probe where {@link ShStatistics.lowestIrradiance} is. */
 	lowestProbe: number;
+
+	/** The lowest of each probe's lowest irradiance divided by its mean irradiance (the depth of the worst ring; may be ≥ 0). */
+	deepestRing: number;
+
+	/** The probe where {@link ShStatistics.deepestRing} is. */
+	deepestRingProbe: number;
 
 }
 
@@ -88,7 +94,7 @@ export function shStatistics( sh: Float32Array, count: number ): ShStatistics {
 
 	const blackThreshold = Math.max( BLACK_FLOOR, BLACK_FRACTION * brightest );
 	const blackProbes: number[] = [], negativeProbes: number[] = [];
-	let lowestIrradiance = Infinity, lowestProbe = 0;
+	let lowestIrradiance = Infinity, lowestProbe = 0, deepestRing = Infinity, deepestRingProbe = 0;
 	for ( let p = 0; p < count; p ++ ) {
 
 		const o = SH_FLOATS * p;
@@ -102,7 +108,15 @@ export function shStatistics( sh: Float32Array, count: number ): ShStatistics {
 
 		}
 
-		if ( lowest < - NEGATIVE_FRACTION * IRRADIANCE_C4 * Math.max( largest, blackThreshold ) ) negativeProbes.push( p );
+		const ring = lowest / ( IRRADIANCE_C4 * Math.max( largest, blackThreshold ) );
+		if ( ring < deepestRing ) {
+
+			deepestRing = ring;
+			deepestRingProbe = p;
+
+		}
+
+		if ( ring < - NEGATIVE_FRACTION ) negativeProbes.push( p );
 
 	}
 
@@ -110,7 +124,7 @@ export function shStatistics( sh: Float32Array, count: number ): ShStatistics {
 		count, l00, blackThreshold,
 		black: blackProbes.length, blackProbes,
 		negative: negativeProbes.length, negativeProbes,
-		lowestIrradiance, lowestProbe,
+		lowestIrradiance, lowestProbe, deepestRing, deepestRingProbe,
 	};
 
 }
@@ -130,7 +144,8 @@ export function formatShStatistics( stats: ShStatistics ): [ string, string ][] 
 		[ 'black probes', `${countOf( stats.black, stats.count )} (L00 ≤ ${formatValue( stats.blackThreshold )} in every channel${share}`
 			+ `${listProbes( stats.blackProbes )})` ],
 		[ 'negative irradiance', `${countOf( stats.negative, stats.count )} (E(n) below −1/${Math.round( 1 / NEGATIVE_FRACTION )} of the probe's mean for some `
-			+ `normal n; lowest ${formatValue( stats.lowestIrradiance )} at probe ${stats.lowestProbe}${listProbes( stats.negativeProbes )})` ],
+			+ `normal n${listProbes( stats.negativeProbes )}; lowest E(n) ${formatValue( stats.lowestIrradiance )} at probe ${stats.lowestProbe}, `
+			+ `lowest E(n)/mean ${formatPercent( stats.deepestRing )} at probe ${stats.deepestRingProbe})` ],
 	];
 
 }
@@ -148,6 +163,13 @@ export function listProbes( probes: readonly number[] ): string {
 	if ( probes.length === 0 ) return '';
 	const shown = probes.slice( 0, 8 ).join( ', ' );
 	return `; probe${probes.length === 1 ? '' : 's'} ${shown}${probes.length > 8 ? ` and ${probes.length - 8} more` : ''}`;
+
+}
+
+/** A ratio as a percentage to 2 significant digits: "-1.7 %". */
+export function formatPercent( ratio: number ): string {
+
+	return `${Number( ( 100 * ratio ).toPrecision( 2 ) )} %`;
 
 }
 

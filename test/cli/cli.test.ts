@@ -45,7 +45,12 @@ describe( 'capture-lighting: usage', () => {
 
 		const run = runCli( [ '--help' ] );
 		expect( run.code ).toBe( 0 );
-		for ( const option of [ 'bake', 'inspect', '--probes', '--out', '--resolution', '--format', '--precision', '--near', '--far', '--sky', '--sun', '--ambient', '--browser', '--quiet', '--help' ] ) {
+		const options = [
+			'bake', 'inspect', '--probes', '--out', '--resolution', '--format', '--precision', '--near', '--far', '--sky', '--sun', '--point',
+			'--spot', '--ambient', '--no-shadows', '--shadow-map-size', '--shadow-bias', '--deringing', '--non-negative', '--strict', '--browser',
+			'--quiet', '--help',
+		];
+		for ( const option of options ) {
 
 			expect( run.stdout ).toContain( option );
 
@@ -83,11 +88,13 @@ describe( 'capture-lighting: usage', () => {
 		expect( command.command ).toBe( 'bake' );
 		if ( command.command !== 'bake' ) return;
 		expect( command.options.format ).toBe( 'json' );
-		expect( command.options.sun ).toEqual( { direction: [ - 1, 2, - 0.5 ], intensity: 4 } );
+		expect( command.options.lights ).toMatchObject( [ { type: 'directional', direction: [ - 1, 2, - 0.5 ], intensity: 4 } ] );
 		expect( command.options.sky ).toEqual( { color: [ 1, 128 / 255, 0 ] } );
 		expect( command.options.resolution ).toBe( 16 );
 		expect( command.options.browser ).toBe( '/usr/bin/chromium' );
-		expect( parseArguments( [ 'bake', 's.glb', '--probes', 'p', '--out', 'v.bin' ], { CHROME_PATH: '/x/chrome' } ) ).toMatchObject( { options: { format: 'bin', precision: 'float16', resolution: 128, browser: '/x/chrome' } } );
+		expect( parseArguments( [ 'bake', 's.glb', '--probes', 'p', '--out', 'v.bin' ], { CHROME_PATH: '/x/chrome' } ) ).toMatchObject( { options: { format: 'bin', precision: 'float32', resolution: 32, browser: '/x/chrome' } } );
+		expect( parseArguments( [ 'inspect', '--strict', 'v.bin' ], {} ) ).toEqual( { command: 'inspect', file: 'v.bin', strict: true } );
+		expect( parseArguments( [ 'inspect', 'v.bin' ], {} ) ).toEqual( { command: 'inspect', file: 'v.bin', strict: false } );
 
 	} );
 

@@ -63,12 +63,14 @@ describe( 'capture-lighting inspect: SH statistics and warnings', () => {
 		expect( row( 'L00 min/median/max' ) ).toBe( `${channel}, ${channel.replace( 'R', 'G' )}, ${channel.replace( 'R', 'B' )}` );
 		// The brightest L00 is 1.9: black below 1.9e-3.
 		expect( row( 'black probes' ) ).toBe( '2 of 10 (L00 ≤ 0.0019 in every channel, 1/1000 of the brightest; probes 3, 7)' );
-		expect( row( 'negative irradiance' ) ).toBe( `1 of 10 (E(n) below −1/256 of the probe's mean for some normal n; lowest ${
-			Number( ( C4 * 0.1 - 2 * C2 ).toPrecision( 4 ) )} at probe 5; probe 5)` );
+		// Probe 5's lowest E over its mean: (c4·0.1 − 2·c2) / (c4·0.1) = −10.5 → "-1100 %".
+		expect( row( 'negative irradiance' ) ).toBe( '1 of 10 (E(n) below −1/256 of the probe\'s mean for some normal n; probe 5; lowest E(n) '
+			+ `${Number( ( C4 * 0.1 - 2 * C2 ).toPrecision( 4 ) )} at probe 5, lowest E(n)/mean -1100 % at probe 5)` );
 		const warnings = run.stderr.trim().split( '\n' );
 		expect( warnings ).toHaveLength( 2 );
 		expect( warnings[ 0 ] ).toMatch( /^warning: 2 of 10 probes are black \(L00 ≤ 0\.0019 in every channel; probes 3, 7\): .*inside walls/ );
-		expect( warnings[ 1 ] ).toMatch( /^warning: 1 of 10 probes have negative irradiance \(lowest E\(n\) -0\.9347 at probe 5; probe 5\): .*--non-negative/ );
+		expect( warnings[ 1 ] ).toMatch( new RegExp( /^warning: 1 of 10 probes have negative irradiance \(E\(n\) down to -1100 % of the probe's mean at probe 5, /
+			.source + /lowest E\(n\) -0\.9347 at probe 5; probe 5\): .*--non-negative/.source ) );
 
 	} );
 
@@ -99,7 +101,7 @@ describe( 'capture-lighting inspect: SH statistics and warnings', () => {
 		expect( clean.warnings ).toEqual( [] );
 		expect( warnings ).toEqual( [] );
 		expect( lines.join( '\n' ) ).toMatch( /black probes +0 of 10 \(L00 ≤ 0\.0019/ );
-		expect( lines.join( '\n' ) ).toMatch( /negative irradiance +0 of 10 .*lowest 0\.8862 at probe 0\)/ );
+		expect( lines.join( '\n' ) ).toMatch( /negative irradiance +0 of 10 .*lowest E\(n\) 0\.8862 at probe 0, lowest E\(n\)\/mean 100 % at probe 0\)/ );
 
 	} );
 

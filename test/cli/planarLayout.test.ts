@@ -9,7 +9,15 @@ import { layoutShape } from '../../cli/layoutShape.js';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { PlanarMesh } from '../../src/interpolation/PlanarMesh.js';
 import { ProbeLineInterpolator } from '../../src/runtime/ProbeLineInterpolator.js';
-import { runCli, writeLayout } from './fixtures.js';
+import { checkChromium, resolveChromiumPath } from '../../cli/chromium.js';
+import { decodeBakedVolume } from '../../src/io/index.js';
+import { runCli, writeLayout, writeRoom } from './fixtures.js';
+
+// The end-to-end bake runs in headless Chromium (SwiftShader) when it is installed.
+const CHROMIUM = resolveChromiumPath();
+const missing = checkChromium( CHROMIUM.path, CHROMIUM.source );
+const skipReason = missing ? `${missing} The planar bake test is skipped.` : '';
+if ( skipReason ) console.warn( skipReason );
 
 /*
  * Layouts that span no volume — probes in one plane (a floor of probes) or on one line (a
@@ -175,6 +183,47 @@ describe( 'planar and collinear layouts', () => {
 		expect( run.stderr ).toBe( '' );
 		expect( run.stdout ).toMatch( /^ {2}probes +12$/m );
 		expect( run.stdout ).toMatch( /^ {2}tetrahedra +0 \(none stored: the probes lie in one plane;/m );
+
+	} );
+
+} );
+
+describe.skipIf( skipReason !== '' )( 'capture-lighting bake of a planar layout (headless Chromium)', () => {
+
+	it( 'a floor of 9 probes in the room: exit 0, no warning, no tetrahedra stored; inspect agrees; the runtime loads it in its plane', () => {
+
+		const room = writeRoom( dir );
+		// A 3 × 3 grid 1.5 m above the floor of the room (x, z ∈ [−2, 2]; red wall at x = −2).
+		const positions = [ - 1, 0, 1 ].flatMap( ( z ) => [ - 1, 0, 1 ].flatMap( ( x ) => [ x, 1.5, z ] ) );
+		const layout = writeLayout( dir, 'floor.json', { positions } );
+		const out = join( dir, 'floor.bin' );
+		// --ambient lights the walls (the emissive ceiling alone leaves them black and rings: E(n) down to
+		// −1.7 % of the mean, which --strict would refuse); --strict makes any warning fail the test.
+		const args = [ '--resolution', '8', '--ambient', '1', '--strict' ];
+		const run = runCli( [ 'bake', room, '--probes', layout, '--out', out, ...args ], { CHROME_PATH: CHROMIUM.path } );
+		expect( run.code, run.stderr ).toBe( 0 );
+		expect( run.stderr ).not.toContain( 'warning:' );
+		expect( run.stdout ).toMatch( /^ {2}tetrahedra +none: the probes lie in one plane/m );
+
+		const inspected = runCli( [ 'inspect', '--strict', out ] );
+		expect( inspected.code, inspected.stderr ).toBe( 0 );
+		expect( inspected.stdout ).toMatch( /^ {2}tetrahedra +0 \(none stored: the probes lie in one plane;/m );
+		expect( inspected.stdout ).toMatch( /^ {2}black probes +0 of 9 /m );
+
+		const bytes = readFileSync( out );
+		const data = decodeBakedVolume( bytes );
+		expect( data.tetrahedra.length ).toBe( 0 );
+		const loaded = LightProbeVolume.fromArrayBuffer( bytes );
+		expect( loaded.interpolator ).toBeInstanceOf( PlanarMesh );
+		// At a probe the field is that probe's SH; halfway along a grid edge, the mean of its two ends.
+		const at = ( p: number ) => Array.from( data.sh.subarray( 27 * p, 27 * p + 27 ) );
+		const sampled = Array.from( loaded.sample( positions.slice( 12, 15 ) ) );
+		sampled.forEach( ( v, i ) => expect( v ).toBeCloseTo( at( 4 )[ i ], 6 ) );
+		const mid = Array.from( loaded.sample( [ - 0.5, 1.5, 0 ] ) );
+		mid.forEach( ( v, i ) => expect( v ).toBeCloseTo( 0.5 * ( at( 3 )[ i ] + at( 4 )[ i ] ), 6 ) );
+		// The light is right too: the probe nearest the red wall (x = −1) has more red per green than the one opposite.
+		const ratio = ( p: number ) => at( p )[ 0 ] / at( p )[ 1 ];
+		expect( ratio( 3 ) ).toBeGreaterThan( 1.05 * ratio( 5 ) );
 
 	} );
 

@@ -98,6 +98,41 @@ describe( 'shStatistics', () => {
 
 	} );
 
+	it( 'the worst ring relative to the probe\'s mean and the lowest value can be at different probes', () => {
+
+		// Probe 0: L00 10, L10 9: min E = 10·c4 − 2·c2·9 = −0.348, mean 8.862 → −3.9 %.
+		// Probe 1: L00 0.1, L10 0.1: min E = 0.0886 − 0.1023 = −0.0137, mean 0.0886 → −15.5 %.
+		const stats = shStatistics( shOf( [ { l00: 10, l10: 9 }, { l00: 0.1, l10: 0.1 } ] ), 2 );
+		expect( stats.lowestProbe ).toBe( 0 );
+		expect( stats.lowestIrradiance ).toBeCloseTo( 10 * C4 - 18 * C2, 4 );
+		expect( stats.deepestRingProbe ).toBe( 1 );
+		expect( stats.deepestRing ).toBeCloseTo( ( 0.1 * C4 - 0.2 * C2 ) / ( 0.1 * C4 ), 5 );
+
+	} );
+
+	it( 'a uniform cap of 60° (a ceiling light seen from below) rings to E(−z) = −0.0245, −3.1 % of its mean, by hand', () => {
+
+		// Radiance 1 for θ < 60° about +z: L_l0 = 2π ∫ Y_l0 over cos θ ∈ [½, 1]: L00 = 2π·Y00·½,
+		// L10 = 2π·Y1·(1 − ¼)/2, L20 = 2π·Y20·(½ − ⅛). E(−z) = c4·L00 − 2·c2·L10 + (c3 − c5)·L20.
+		const L00 = Math.PI * 0.282095, L10 = 2 * Math.PI * 0.488603 * 0.375, L20 = 2 * Math.PI * 0.315392 * 0.375;
+		const sh = new Float32Array( 27 );
+		for ( let c = 0; c < 3; c ++ ) {
+
+			sh[ c ] = L00;
+			sh[ 6 + c ] = L10;
+			sh[ 18 + c ] = L20;
+
+		}
+
+		const expected = C4 * L00 - 2 * C2 * L10 + ( 0.743125 - 0.247708 ) * L20;
+		expect( expected ).toBeCloseTo( - 0.02454, 5 );
+		const stats = shStatistics( sh, 1 );
+		expect( stats.lowestIrradiance ).toBeCloseTo( expected, 5 );
+		expect( stats.deepestRing ).toBeCloseTo( expected / ( C4 * L00 ), 5 );
+		expect( stats.negative ).toBe( 1 );
+
+	} );
+
 	it( `black: every channel's L00 ≤ ${BLACK_FRACTION} of the brightest probe's largest L00, or ≤ 1e-6`, () => {
 
 		// Brightest L00 = 4 (blue of probe 0): threshold 4e-3.
@@ -168,7 +203,8 @@ describe( 'shStatistics', () => {
 		expect( rows ).toEqual( [
 			[ 'L00 min/median/max', 'R 0 / 0.1 / 1, G 0 / 0.1 / 2, B 0 / 0.1 / 4' ],
 			[ 'black probes', '1 of 3 (L00 ≤ 0.004 in every channel, 1/1000 of the brightest; probe 1)' ],
-			[ 'negative irradiance', '1 of 3 (E(n) below −1/256 of the probe\'s mean for some normal n; lowest -0.9347 at probe 2; probe 2)' ],
+			[ 'negative irradiance', '1 of 3 (E(n) below −1/256 of the probe\'s mean for some normal n; probe 2; lowest E(n) -0.9347 at probe 2, '
+				+ 'lowest E(n)/mean -1100 % at probe 2)' ],
 		] );
 
 	} );
@@ -217,7 +253,8 @@ describe( 'bakeWarnings', () => {
 
 		const warnings = bakeWarnings( shStatistics( shOf( [ { l00: 1 }, { l00: 0.1, l10: 1 }, { l00: 0.2, l10: 1 } ] ), 3 ), lit );
 		expect( warnings ).toHaveLength( 1 );
-		expect( warnings[ 0 ] ).toMatch( /^2 of 3 probes have negative irradiance \(lowest E\(n\) -0\.9347 at probe 1; probes 1, 2\): ringing/ );
+		// Probe 1: −0.9347 / (c4·0.1) = −10.5; probe 2: (c4·0.2 − 2·c2) / (c4·0.2) = −4.8.
+		expect( warnings[ 0 ] ).toMatch( /^2 of 3 probes have negative irradiance \(E\(n\) down to -1100 % of the probe's mean at probe 1, lowest E\(n\) -0\.9347 at probe 1; probes 1, 2\): ringing/ );
 		expect( warnings[ 0 ] ).toMatch( /--non-negative, or --deringing 0\.1/ );
 
 	} );
