@@ -138,6 +138,42 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake: lights (headless C
 
 	} );
 
+	it( '--spot aimed at the red wall lights it; a layout sun above the closed room is shadowed by it, and leaks in with --no-shadows', () => {
+
+		// The spot (30 cd, 25° half angle) from under the ceiling's centre at the red wall's middle:
+		// the probe by the red wall sees a lit red patch, the one by the green wall only its bounce.
+		const scene = writeCornellOBJ( dir, { mtl: true } );
+		const spot = bake( scene, join( dir, 'spot.bin' ), [ '--resolution', '8', '--spot', '0,2.9,0,-2,1.5,0,30,#ffffff,25' ] );
+		expect( spot.code, spot.stderr ).toBe( 0 );
+		expect( row( spot.stdout, 'lights' ) ).toBe( '1 spot light (flags); no emissive materials' );
+		expect( l00( spot.sh, BY_RED, 0 ) ).toBeGreaterThan( 2 * l00( spot.sh, BY_GREEN, 0 ) );
+
+		// The sun shines from above and a little +z onto the room's outside. Without shadows it lights
+		// the floor and walls inside (L00 0.19–0.63); with them, what gets in through the seams of the
+		// single-sided quads is at most 0.96 % of that (measured), and five probes stay black.
+		const withSun = writeLayout( dir, 'cornell-sun.json', {
+			...CORNELL_PROBES, lights: [ { type: 'directional', direction: [ 0, 1, 0.2 ], intensity: 5 } ],
+		} );
+		const shadowed = bake( scene, join( dir, 'sun.bin' ), [ '--resolution', '8' ], withSun );
+		expect( shadowed.code, shadowed.stderr ).toBe( 0 );
+		expect( row( shadowed.stdout, 'lights' ) ).toBe( '1 directional light (layout); no emissive materials' );
+		expect( shadowed.stderr ).toMatch( /^warning: 5 of 7 probes are black/m );
+		const leaking = bake( scene, join( dir, 'sun-leak.bin' ), [ '--resolution', '8', '--no-shadows' ], withSun );
+		expect( leaking.code, leaking.stderr ).toBe( 0 );
+		expect( row( leaking.stdout, 'shadows' ) ).toBe( 'off (--no-shadows; 0 lights cast shadows as the file says)' );
+		for ( let probe = 0; probe < 7; probe ++ ) {
+
+			for ( let c = 0; c < 3; c ++ ) {
+
+				expect( l00( leaking.sh, probe, c ) ).toBeGreaterThan( 0.1 );
+				expect( l00( shadowed.sh, probe, c ), `probe ${probe} channel ${c}` ).toBeLessThan( 0.02 * l00( leaking.sh, probe, c ) );
+
+			}
+
+		}
+
+	} );
+
 	it( 'no light at all: the warning is printed (also with --quiet); --strict exits 1 and writes nothing', () => {
 
 		const scene = writeCornellOBJ( dir, { mtl: true } );
