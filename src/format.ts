@@ -1,8 +1,8 @@
 /**
  * `three-capture-lighting/format` — the baked light-probe-volume codec (no three.js): the
  * versioned little-endian binary form and its JSON mirror, both validated field by field on
- * load (layout and rules: docs/format.md). `LightProbeVolume.toArrayBuffer()` /
- * `fromArrayBuffer()` use it; import it directly for tools that read or write files without a
+ * load (layout and rules: docs/format.md). `LightProbeVolumeExporter` /
+ * `LightProbeVolumeLoader` use it; import it directly for tools that read or write files without a
  * renderer.
  */
 

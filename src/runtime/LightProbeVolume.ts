@@ -1,16 +1,15 @@
-import type { Object3D, Scene, WebGLRenderer } from 'three';
+import type { Object3D, Scene, Vector3, WebGLRenderer } from 'three';
 import { boundsOf } from '../geometry/boundsOf.js';
 import { assertRenderer, assertScene } from '../capture/captureSettings.js';
 import { blendSH } from '../interpolation/blendSH.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import {
-	bakedVolumeFromJSON, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume,
-	type BakedCapture, type BakedVolumeData, type BakedVolumeInput, type BakedVolumeJSON, type EncodeBakedVolumeOptions,
-} from '../io/index.js';
+import type { BakedCapture, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
 import { readProbeNames, readProbeRoles, type ProbeRole } from '../roles.js';
 import { SH_FLOATS, assertOptions, assertProbePositions, assertProbeSH } from '../validate.js';
-import { checkBakedData, parametersFromBakedData, toBakedVolumeInput } from './bakedVolumeData.js';
+import {
+	assertBakedVolumeParameters, checkBakedData, parametersFromBakedData, toBakedVolumeInput, type BakedVolumeParameters,
+} from './bakedVolumeData.js';
 import { captureVolume } from './captureBounces.js';
 import { CAPTURE_ACCESS, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
 import { createVolumeInterpolator } from './createVolumeInterpolator.js';
@@ -32,9 +31,6 @@ export type {
 	AddOptions, AddProbeOptions, LightProbeVolumeBounceOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters,
 	ProbeLighting, ProbeLightingChoice, ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
 } from './LightProbeVolumeOptions.js';
-
-/** Parameters of {@link LightProbeVolume.fromBakedData} besides the baked data. */
-type BakedVolumeParameters = Omit<LightProbeVolumeParameters, 'positions' | 'sh' | 'names' | 'roles' | 'zones' | 'interpolator'>;
 
 /**
  * Light probes placed anywhere, captured from the scene and blended per object every frame —
@@ -96,7 +92,7 @@ export class LightProbeVolume {
 
 	/**
 	 * Capture settings of the last {@link LightProbeVolume.capture} (or those read from a baked
-	 * file): stored by {@link LightProbeVolume.toArrayBuffer} so a bake says how it was made.
+	 * file): stored in baked files (`LightProbeVolumeExporter`) so a bake says how it was made.
 	 */
 	captureSettings: BakedCapture = {};
 
@@ -229,9 +225,11 @@ export class LightProbeVolume {
 	 * Objects lit as `'dynamic'` (`add( object )` in mode `'object'`, and what `add( scene )` found
 	 * moving) are hidden while capturing, so add them before capturing — a character added later is
 	 * captured into the probes it is then lit by; `options.exclude` hides more. Scenery lit by the
-	 * volume (large objects, static props) stays in view with its probe light off. All or nothing: the results are staged and
-	 * put into the volume (SH, dirty set, `captureSettings`) only when every probe and pass is
-	 * done, so a capture that fails — a lost context, a throwing callback — changes nothing.
+	 * volume (large objects, static props) stays in view with its probe light off. Shadow maps are
+	 * drawn once per pass, not per cube face, and the renderer's shadow-map settings are restored.
+	 * All or nothing: the results are staged and put into the volume (SH, dirty set,
+	 * `captureSettings`) only when every probe and pass is done, so a capture that fails — a lost
+	 * context, a throwing callback — changes nothing.
 	 * With `options.bounces` = n, captures n + 1 times, adding a bounce of diffuse interreflection
 	 * each time (as `captureBounces`, which also returns the statistics of each pass).
 	 */
@@ -364,23 +362,6 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * The volume as a baked binary file (little-endian, versioned; layout in docs/format.md).
-	 * @param options `precision`: SH as `'float32'` (default, exact) or `'float16'` (smaller).
-	 */
-	toArrayBuffer( options?: EncodeBakedVolumeOptions ): ArrayBuffer {
-
-		return encodeBakedVolume( this.toBakedData(), options );
-
-	}
-
-	/** The volume in the JSON form of the baked format (mirrors the binary; `JSON.stringify` it). */
-	toJSON(): BakedVolumeJSON {
-
-		return bakedVolumeToJSON( this.toBakedData() );
-
-	}
-
-	/**
 	 * A volume from decoded baked data (as `decodeBakedVolume` or `bakedVolumeFromJSON` return it,
 	 * having checked it): the stored tetrahedralization is used as it is, without checking it again;
 	 * without one, the default interpolator is built.
@@ -389,34 +370,11 @@ export class LightProbeVolume {
 	static fromBakedData( data: BakedVolumeData, parameters: BakedVolumeParameters = {} ): LightProbeVolume {
 
 		checkBakedData( 'LightProbeVolume.fromBakedData', data );
-		assertOptions( 'LightProbeVolume.fromBakedData', 'parameters', parameters );
+		assertBakedVolumeParameters( 'LightProbeVolume.fromBakedData', parameters );
 		const volume = new LightProbeVolume( { ...parameters, ...parametersFromBakedData( data ) } );
 		volume.captureSettings = data.capture;
 		volume.metadata = data.metadata;
 		return volume;
-
-	}
-
-	/**
-	 * Loads a baked binary file written by {@link LightProbeVolume.toArrayBuffer} (or another
-	 * writer of docs/format.md). A truncated, corrupted, newer-version or hostile file throws a
-	 * `BakedVolumeError` naming the problem; every file the decoder accepts loads.
-	 */
-	static fromArrayBuffer( buffer: ArrayBuffer | ArrayBufferView, parameters?: BakedVolumeParameters ): LightProbeVolume {
-
-		assertOptions( 'LightProbeVolume.fromArrayBuffer', 'parameters', parameters );
-		return LightProbeVolume.fromBakedData( decodeBakedVolume( buffer ), parameters );
-
-	}
-
-	/**
-	 * Loads the JSON form (an object or its text), with the same checks as
-	 * {@link LightProbeVolume.fromArrayBuffer}: malformed text is a `BakedVolumeError` ('json').
-	 */
-	static fromJSON( json: unknown, parameters?: BakedVolumeParameters ): LightProbeVolume {
-
-		assertOptions( 'LightProbeVolume.fromJSON', 'parameters', parameters );
-		return LightProbeVolume.fromBakedData( bakedVolumeFromJSON( json ), parameters );
 
 	}
 
@@ -480,6 +438,19 @@ export class LightProbeVolume {
 	getLighting( object: Object3D ): ProbeLighting | null {
 
 		return this.objects.lightingOf( object );
+
+	}
+
+	/**
+	 * The point where an object registered in `'object'` mode (or `'dynamic'`) samples the probes,
+	 * in its local frame (its `anchor`), written into `target`; null for other objects.
+	 */
+	getAnchor( object: Object3D, target: Vector3 ): Vector3 | null {
+
+		assertObject3D( 'LightProbeVolume.getAnchor', object );
+		const entry = this.objects.find( object );
+		if ( entry === undefined || entry.large !== null ) return null;
+		return target.set( entry.anchor[ 0 ], entry.anchor[ 1 ], entry.anchor[ 2 ] );
 
 	}
 

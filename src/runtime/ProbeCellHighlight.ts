@@ -59,8 +59,9 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 	}
 
 	/**
-	 * Follows `target`: an object (the cell it samples at its bounding-box centre, in the zone the
-	 * volume used for it at the last `update()`), a position (read again every frame), or null.
+	 * Follows `target`: an object (the cell it samples at its anchor — its bounding-box centre unless
+	 * `add()` was given one — in the zone the volume used for it at the last `update()`), a
+	 * position (read again every frame), or null.
 	 * @throws TypeError for anything else, leaving the highlight as it was.
 	 */
 	follow( target: HighlightTarget ): void {
@@ -68,7 +69,10 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 		const where = 'LightProbeVolumeHelper.highlight';
 		if ( target !== null && ( target as Object3D ).isObject3D === true ) {
 
-			objectAnchor( target as Object3D, this.anchor );
+			// Where the volume samples it (its anchor) when registered, else its bounding-box centre as add() would.
+			const anchor = this.volume.getAnchor( target as Object3D, new Vector3() );
+			if ( anchor !== null ) anchor.toArray( this.anchor );
+			else objectAnchor( target as Object3D, this.anchor );
 
 		} else if ( target !== null ) {
 

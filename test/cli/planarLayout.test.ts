@@ -7,6 +7,7 @@ import { encodeVolume, readVolume } from '../../cli/codec.js';
 import { inspect } from '../../cli/inspect.js';
 import { layoutShape } from '../../cli/layoutShape.js';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
+import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { PlanarMesh } from '../../src/interpolation/PlanarMesh.js';
 import { ProbeLineInterpolator } from '../../src/runtime/ProbeLineInterpolator.js';
 import { checkChromium, resolveChromiumPath } from '../../cli/chromium.js';
@@ -129,7 +130,7 @@ describe( 'planar and collinear layouts', () => {
 			expect( lines.join( '\n' ) ).toMatch( /^ {2}tetrahedra +0 \(none stored: the probes lie in one plane; LightProbeVolume triangulates them in their plane when it loads the file\)$/m );
 			expect( warnings ).toEqual( [] );
 
-			const loaded = format === 'json' ? LightProbeVolume.fromJSON( JSON.parse( bytes.toString( 'utf8' ) ) ) : LightProbeVolume.fromArrayBuffer( bytes );
+			const loaded = new LightProbeVolumeLoader().parse( format === 'json' ? JSON.parse( bytes.toString( 'utf8' ) ) : bytes );
 			expect( loaded.interpolator ).toBeInstanceOf( PlanarMesh );
 			for ( const point of points ) {
 
@@ -160,7 +161,7 @@ describe( 'planar and collinear layouts', () => {
 		inspect( file, { strict: true, log: ( text ) => lines.push( text ), warn: () => {} } );
 		expect( lines.join( '\n' ) ).toMatch( /tetrahedra +0 \(none stored: the probes lie on one line; LightProbeVolume interpolates along their line/ );
 
-		const loaded = LightProbeVolume.fromArrayBuffer( readFileSync( file ) );
+		const loaded = new LightProbeVolumeLoader().parse( readFileSync( file ) );
 		expect( loaded.interpolator ).toBeInstanceOf( ProbeLineInterpolator );
 		const direct = new LightProbeVolume( { positions: LINE, sh } );
 		for ( const t of [ 0.3, 1.8, 2.75, 4 ] ) {
@@ -213,7 +214,7 @@ describe.skipIf( skipReason !== '' )( 'capture-lighting bake of a planar layout 
 		const bytes = readFileSync( out );
 		const data = decodeBakedVolume( bytes );
 		expect( data.tetrahedra.length ).toBe( 0 );
-		const loaded = LightProbeVolume.fromArrayBuffer( bytes );
+		const loaded = new LightProbeVolumeLoader().parse( bytes );
 		expect( loaded.interpolator ).toBeInstanceOf( PlanarMesh );
 		// At a probe the field is that probe's SH; halfway along a grid edge, the mean of its two ends.
 		const at = ( p: number ) => Array.from( data.sh.subarray( 27 * p, 27 * p + 27 ) );

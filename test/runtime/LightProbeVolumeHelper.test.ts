@@ -313,6 +313,24 @@ describe( 'LightProbeVolumeHelper: the highlighted cell', () => {
 
 	} );
 
+	it( 'an object added with an anchor: the cell holding the anchor, not the bounding-box centre (getAnchor)', () => {
+
+		const volume = new LightProbeVolume( { positions } );
+		const mesh = volume.interpolator as TetrahedralMesh;
+		const object = box( [ 0, 0, 0 ] );
+		// Box centre at the origin, anchor 0.8 below it: two different cells of the cube.
+		volume.add( object, { anchor: { x: 0.7, y: - 0.8, z: 0.2 } } );
+		expect( volume.getAnchor( object, new THREE.Vector3() )?.toArray() ).toEqual( [ 0.7, - 0.8, 0.2 ] );
+		expect( volume.getAnchor( new THREE.Object3D(), new THREE.Vector3() ) ).toBeNull();
+		expect( containingTetrahedron( mesh, [ 0.7, - 0.8, 0.2 ] ).join() ).not.toBe( containingTetrahedron( mesh, [ 0, 0, 0 ] ).join() );
+		const helper = new LightProbeVolumeHelper( volume );
+		helper.highlight( object );
+		frame( volume, helper );
+		expect( highlightedEdges( helper ) ).toEqual( edgesOfCells( containingTetrahedron( mesh, [ 0.7, - 0.8, 0.2 ] ), 4 ) );
+		helper.dispose();
+
+	} );
+
 	it( 'a Vector3 is followed by reference; an unchanged cell is not uploaded again (no per-frame upload)', () => {
 
 		const volume = new LightProbeVolume( { positions } );
