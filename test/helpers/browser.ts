@@ -44,7 +44,8 @@ export async function startBrowser(): Promise<BrowserSession> {
 		logLevel: 'error',
 		plugins: [ assetsPlugin() ],
 		resolve: { alias: libraryAliases( root ) },
-		server: { host: '127.0.0.1', port: 0, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
+		// No hot reload and no file watching: an edit to src/ during a run must not reload a page mid-test.
+		server: { host: '127.0.0.1', port: 0, hmr: false, watch: null, fs: { allow: [ root, resolve( root, '../shared' ) ] } },
 		// No dependency pre-bundling: every dependency is plain ESM, and a re-optimisation found
 		// mid-run would reload a page under test.
 		optimizeDeps: { noDiscovery: true, include: [] },
