@@ -33,7 +33,8 @@ async function init(): Promise<void> {
 			interpolator: createProbeInterpolator( layout.positions, { outside: settings.outside } ),
 			zones: settings.zones ? zonesOf( layout ) : undefined,
 		} ),
-		// Each object is lit by the 4 probes of the tetrahedron around it.
+		// Each object is lit by the 4 probes of the tetrahedron around it. Added before the capture,
+		// which then hides them: the fox is never captured into its own probes.
 		addObjects: ( volume ) => {
 
 			for ( const object of objects.list ) volume.add( object );

@@ -8,6 +8,9 @@ import { LightProbeVolume } from 'three-capture-lighting';
 import { PlanarMesh, evaluateIrradiance, makeIrradianceNonNegative, windowSH } from 'three-capture-lighting/math';
 import { projectEquirectToSHGPU } from 'three-capture-lighting/capture';
 import { loadCharacter } from './common/character.js';
+import { kyotoLegend } from './common/kyotoLegend.js';
+import { panoramaTableText } from './common/kyotoPanoramaTable.js';
+import { screenBox } from './common/screenBox.js';
 import { Overlay } from './common/Overlay.js';
 import type { DemoReport } from './common/report.js';
 import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, type KyotoPanorama } from '@scenes/kyoto.js';
@@ -23,7 +26,7 @@ import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, typ
 //
 // Query: assets (asset folder URL, default /assets/), layout, t (freeze time, seconds),
 // background=none, probes=0 (hide probe markers), hide=gui, deringing=s, nonnegative=1.
-// For tests: window.__demo (DemoReport) and window.__kyoto.addPanorama( url, x, z, name? ).
+// For tests: window.__demo (DemoReport) and window.__kyoto (addPanorama( url, x, z, name? ), params, showLegend, …).
 
 interface Panorama extends KyotoPanorama { texture: THREE.Texture; sh: Float32Array; ms: number; minE: number; maxE: number; size: string }
 
@@ -53,11 +56,13 @@ labelRenderer.setSize( window.innerWidth, window.innerHeight );
 labelRenderer.domElement.style.cssText = 'position:absolute;top:0;left:0;pointer-events:none';
 document.body.appendChild( labelRenderer.domElement );
 const stats = new Stats();
-// ?hide=gui: no panel, stats or text that changes from run to run (screenshots for tests).
-if ( query.get( 'hide' ) === 'gui' ) document.body.classList.add( 'no-ui' ); else document.body.appendChild( stats.dom );
+// ?hide=gui: no panel, stats or text that changes from run to run (screenshots for tests); else
+// main.css places the title between the stats and the panel.
+if ( query.get( 'hide' ) === 'gui' ) document.body.classList.add( 'no-ui' ); else document.body.append( stats.dom );
+document.body.classList.toggle( 'with-panel', query.get( 'hide' ) !== 'gui' );
 const table = document.createElement( 'div' );
 table.id = 'panoramas';
-table.style.cssText = 'position:absolute;top:52px;left:8px;padding:4px 6px;background:rgba(0,0,0,0.55);white-space:pre;font:11px/1.35 ui-monospace,monospace;color:#ddd;pointer-events:none';
+table.style.cssText = 'position:absolute;top:72px;left:8px;padding:4px 6px;background:rgba(0,0,0,0.55);white-space:pre;font:11px/1.35 ui-monospace,monospace;color:#ddd;pointer-events:none';
 document.body.appendChild( table );
 
 const scene = new THREE.Scene();
@@ -279,17 +284,7 @@ function ground( probe: number ): number[] {
 
 function panoramaTable(): void {
 
-	const uses = new Map<string, number>();
-	for ( const p of layout().probes ) uses.set( p.panorama, ( uses.get( p.panorama ) ?? 0 ) + 1 );
-	const lines = [ ...panoramas.values() ].map( ( p ) => `${p.label.padEnd( 13 )}${p.kind.padEnd( 8 )}${p.size.padEnd( 9 )}${p.ms.toFixed( 0 ).padStart( 5 )} ms  E ${p.minE.toFixed( 2 ).padStart( 5 )}…${p.maxE.toFixed( 2 ).padEnd( 6 )} ×${uses.get( p.id ) ?? 0}${p.minE < 0 ? '  E<0: SH ringing (not clamped)' : ''}` );
-	const total = [ ...panoramas.values() ].reduce( ( sum, p ) => sum + p.ms, 0 );
-	table.textContent = `panorama     kind    size      GPU→SH9  E(n) min…max   probes\n${lines.join( '\n' )}\n` +
-		`projection ${total.toFixed( 0 )} ms for ${panoramas.size} panoramas (+ ${warmupMs.toFixed( 0 )} ms shader warm-up)\n` +
-		'photo    real photo file, white ring (Poly Haven, CC0):\n' +
-		'         Potsdamer Platz, Berlin; Venice sunset. Not Kyoto.\n' +
-		'derived  a photo turned about the vertical and/or tinted\n' +
-		'dropped  a file dropped on the map, cyan ring\n' +
-		'magenta on a ball: E(n) < 0 (SH ringing, not clamped)';
+	table.textContent = panoramaTableText( [ ...panoramas.values() ], layout().probes.map( ( p ) => p.panorama ), warmupMs );
 
 }
 
@@ -383,13 +378,22 @@ function createGui(): void {
 	gui.add( params, 'nonNegative' ).name( 'irradiance never negative' ).onChange( buildVolume );
 	gui.add( params, 'exposure', 0, 4, 0.01 ).onChange( ( value: number ) => { renderer.toneMappingExposure = value; } );
 	gui.add( params, 'table' ).name( 'show panorama table' );
-	gui.add( params, 'triangles' ).name( 'show triangles' );
-	gui.add( params, 'probes' ).name( 'show probes' );
+	gui.add( params, 'triangles' ).name( 'show triangles' ).onChange( showLegend );
+	gui.add( params, 'probes' ).name( 'show probes' ).onChange( showLegend );
 	gui.add( params, 'labels' ).name( 'show labels' );
 	gui.add( params, 'animate' );
 	const input = Object.assign( document.createElement( 'input' ), { type: 'file', accept: '.hdr,.jpg,.jpeg,.png' } );
 	input.addEventListener( 'change', () => { if ( input.files?.[ 0 ] && fox ) usePanoramaFile( input.files[ 0 ], fox.position.x, fox.position.z ); input.value = ''; } );
 	gui.add( { add: () => input.click() }, 'add' ).name( 'add a panorama at the fox…' );
+	// On a narrow page the open panel would cover the title (main.css moves the title under it).
+	if ( window.innerWidth < 900 ) gui.close();
+
+}
+
+/** The legend of the rings, magenta patches and the fox's triangle, for what is drawn. */
+function showLegend(): void {
+
+	overlay.legend( kyotoLegend( params ) );
 
 }
 
@@ -456,17 +460,6 @@ function frame( timestamp: number ): void {
 
 }
 
-function characterScreenBox(): number[] {
-
-	const box = new THREE.Box3().setFromObject( fox! );
-	const points = [ 0, 1, 2, 3, 4, 5, 6, 7 ].map( ( i ) => new THREE.Vector3(
-		i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z
-	).project( camera ) );
-	const xs = points.map( ( v ) => ( v.x + 1 ) / 2 * window.innerWidth ), ys = points.map( ( v ) => ( 1 - v.y ) / 2 * window.innerHeight );
-	return [ Math.min( ...xs ), Math.min( ...ys ), Math.max( ...xs ), Math.max( ...ys ) ];
-
-}
-
 window.addEventListener( 'resize', () => {
 
 	camera.aspect = window.innerWidth / window.innerHeight;
@@ -479,7 +472,8 @@ window.addEventListener( 'resize', () => {
 Object.assign( window, {
 	__demo: report,
 	__kyoto: {
-		addPanorama, characterScreenBox, layoutNames: () => layouts.map( ( l ) => l.name ), panoramas, camera, controls,
+		addPanorama, characterScreenBox: () => screenBox( fox!, camera, renderer.domElement ),
+		layoutNames: () => layouts.map( ( l ) => l.name ), panoramas, camera, controls, params, showLegend,
 		get fox() { return fox; }, get volume() { return volume; }
 	}
 } );
@@ -491,8 +485,11 @@ async function start(): Promise<void> {
 		overlay.progress( 'loading the panoramas…', 0 );
 		await projectAll();
 		await addCharacterAndSpheres();
+		// No capture of the scene here (the SH come from the panoramas), so the fox and the spheres
+		// can be added at any time; buildVolume adds them to each new volume.
 		buildVolume();
 		createGui();
+		showLegend();
 		renderer.setAnimationLoop( frame );
 
 	} catch ( error ) {

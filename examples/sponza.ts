@@ -44,6 +44,8 @@ async function init(): Promise<void> {
 			interpolator: createProbeInterpolator( layout.positions, { outside: settings.outside } ),
 			zones: settings.zones ? zonesOf( layout ) : undefined,
 		} ),
+		// The fox, added before the capture, which then hides it (no fox in its own probes); the
+		// floors stay in the captures as built (hideInCaptures: false below).
 		addObjects: ( volume ) => {
 
 			for ( const object of objects.list ) volume.add( object );

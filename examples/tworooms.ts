@@ -5,13 +5,18 @@ import { createTwoRooms } from '@scenes/twoRooms.js';
 import { DynamicObjects } from './common/DynamicObjects.js';
 import { zonesOf } from './common/layouts.js';
 import { ProbeVolumeDemo } from './common/ProbeVolumeDemo.js';
+import type { DemoSettings } from './common/queryParameters.js';
 import { Viewer } from './common/Viewer.js';
 
 // Light through walls: a red room and a blue room share a wall, and one grid of 16 probes spans
-// both, so tetrahedra straddle the wall. The fox walks a loop in the blue room that passes 0.3 m
-// from the wall: with the probes blended as they are it turns purple there (red leaking through).
-// "lighting zones" gives each room its own tetrahedralization (objects take the zone whose box
-// holds them); "no light through walls" drops the probes an object cannot see. Either one stops it.
+// both, so tetrahedra straddle the wall. A white ball hangs in the blue room by the wall, and the
+// fox walks a loop there that passes 0.3 m from it: with the probes blended as they are, both
+// turn purple by the wall (red leaking through). "lighting zones" gives each room its own
+// tetrahedralization (objects take the zone whose box holds them); "no light through walls" drops
+// the probes an object cannot see. Either one stops it: the ball and the fox stay blue.
+
+/** The white ball: in the blue room, by the wall, where the cells across the wall weigh the red room's probes most. */
+const LEAK_BALL = [ 0.45, 1.4, 0.3 ];
 
 const viewer = new Viewer( { camera: { position: [ 0.5, 2.4, 6.2 ], target: [ 0.3, 1, 0 ] } } );
 const { renderer, scene, settings } = viewer;
@@ -27,7 +32,7 @@ async function init(): Promise<void> {
 	// What the probes light: the fox walking a loop in the blue room, close to the wall.
 	const loop = [ [ 0.4, 0, 0 ], [ 1.5, 0, - 1.2 ], [ 3, 0, 0 ], [ 1.5, 0, 1.2 ] ];
 	const path = new THREE.CatmullRomCurve3( loop.map( ( p ) => new THREE.Vector3( ...p ) ), true );
-	const objects = await DynamicObjects.load( viewer, { path, height: 0.6, loopSeconds: 16 } );
+	const objects = await DynamicObjects.load( viewer, { path, height: 0.6, loopSeconds: 16, ball: LEAK_BALL } );
 
 	// One layout over both rooms, with a zone per room ("lighting zones" in the panel, ?zones=1).
 	const box = ( b: THREE.Box3 ) => ( { min: b.min.toArray(), max: b.max.toArray() } );
@@ -41,6 +46,7 @@ async function init(): Promise<void> {
 			// Each zone its own tetrahedralization: no cell spans the wall.
 			zones: settings.zones ? zonesOf( layout ) : undefined,
 		} ),
+		// The fox and the ball, added before the capture: the capture hides them (no fox in the probes).
 		addObjects: ( volume ) => {
 
 			for ( const object of objects.list ) volume.add( object );
@@ -56,12 +62,36 @@ async function init(): Promise<void> {
 	} );
 	await demo.start();
 
+	// The legend says which fix is on; rewritten when a toggle changes it.
+	let shownFix: string | null = null;
 	viewer.animate( ( time, delta ) => {
 
 		objects.move( time, delta );
 		demo.activeVolume.update(); // with the guard on, also drops the probes behind the wall
 		demo.showView( objects.list );
+		const fix = fixName( settings );
+		if ( fix !== shownFix ) showFix( viewer.overlay, shownFix = fix );
 
 	} );
+
+}
+
+/** Which fix is on, as the legend names it ('' for none). */
+function fixName( { zones, guard }: DemoSettings ): string {
+
+	return zones && guard ? 'lighting zones + no light through walls' : zones ? 'lighting zones' : guard ? 'no light through walls' : '';
+
+}
+
+/** The legend: which fix is on and what the ball and the fox show. */
+function showFix( overlay: Viewer[ 'overlay' ], fix: string ): void {
+
+	overlay.legend( fix === '' ? [
+		{ text: 'no fix on: red leaks through the wall', swatch: '#c040ff' },
+		{ text: 'the ball and the fox by it turn purple' },
+	] : [
+		{ text: `fix on: ${fix}`, swatch: '#4060ff' },
+		{ text: 'no red in the blue room: ball and fox blue' },
+	] );
 
 }

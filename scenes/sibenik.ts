@@ -42,7 +42,7 @@ export async function buildSibenik( app: SceneHost ): Promise<void> {
 	} );
 	app.scene.add( object );
 
-	// The sun through the windows (its shadow map is drawn once: the scenery is static).
+	// The sun through the windows (a capture draws its shadow map once).
 	addStaticSun( app, { direction: SIBENIK_SUN, color: 0xfff0d8, intensity: 6, extent: 24, mapSize: 4096 } );
 
 	// Warm lamps over the crossing and the altar, with a visible bulb each.

@@ -23,7 +23,7 @@ export async function buildSponza( app: SceneHost ): Promise<void> {
 	} );
 	app.scene.add( object );
 
-	// The sun: its shadow shapes the courtyard's sunlit patch (drawn once: the scenery is static).
+	// The sun: its shadow shapes the courtyard's sunlit patch (a capture draws its shadow map once).
 	addStaticSun( app, { direction: SPONZA_SUN, color: 0xfff1dc, intensity: 5, extent: 20 } );
 
 	// The sky over the open roof, something the probes can capture: a dome of sky radiance.

@@ -8,16 +8,17 @@ import * as THREE from 'three';
  *
  * - Outer shell: x ∈ [−4.1, 4.1], y ∈ [0, 3], z ∈ [−2, 2], white matte, seen from inside.
  * - Shared wall: a closed box x ∈ [−0.1, 0.1], full height and depth, white matte.
- * - Each room: an emissive ceiling panel (pure red in A, pure blue in B, so no light of one room
- *   can reach the other room's surfaces except through the probes) and a spot light straight down
- *   of the same colour whose cone stays inside its room (three's lights are not shadowed, so a
- *   point light would light the other room's floor through the wall).
+ * - Each room: an emissive ceiling panel (pure red in A, pure blue in B) and a lamp of the same
+ *   colour, a spot light high up against the shared wall that shines away from it, over the
+ *   room's floor, ceiling and walls. Every ray of its cone heads away from the wall (the cone's
+ *   axis is more than its angle away from the wall's plane), so no light of one room reaches the
+ *   other room's surfaces, with or without shadows: all red in room B comes through the probes.
  * - Probes: x ∈ {−3.4, −1, 1, 3.4} × y ∈ {0.5, 2.5} × z ∈ {−1.5, 1.5}, 16 in all, index
  *   `4 · ix + 2 · iy + iz`; probes 0–7 are in room A, 8–15 in room B.
  */
 export interface TwoRooms {
 
-	/** Everything: shell, wall, panels, lights. */
+	/** Everything: shell, wall, panels, lamps and their bulbs. */
 	scene: THREE.Scene;
 
 	/** The static meshes (shell, wall, panels): the occluders for the visibility guard. */
@@ -45,6 +46,11 @@ export interface TwoRooms {
 
 }
 
+/** Candela of each room's lamp: bright enough to show the walls under filmic tone mapping at exposure 1. */
+const LAMP_INTENSITY = 40;
+/** Cone half-angle of each lamp (83°, under 90°: no ray towards the wall) and its height. */
+const LAMP_ANGLE = 1.45, LAMP_HEIGHT = 2.2;
+
 /** Builds the two-room scene (see {@link TwoRooms}). */
 export function createTwoRooms(): TwoRooms {
 
@@ -63,21 +69,27 @@ export function createTwoRooms(): TwoRooms {
 	scene.add( statics );
 
 	const centreA = - ( LENGTH + HALF ) / 2, centreB = ( LENGTH + HALF ) / 2;
-	for ( const [ x, color, name ] of [ [ centreA, 0xff0000, 'A' ], [ centreB, 0x0000ff, 'B' ] ] as const ) {
+	for ( const [ side, color, name ] of [ [ - 1, 0xff0000, 'A' ], [ 1, 0x0060ff, 'B' ] ] as const ) {
 
 		const panel = new THREE.Mesh(
 			new THREE.PlaneGeometry( 1.6, 1.6 ),
 			new THREE.MeshStandardMaterial( { color: 0x000000, emissive: color, emissiveIntensity: 2 } )
 		);
 		panel.rotation.x = Math.PI / 2; // facing down
-		panel.position.set( x, HEIGHT - 0.02, 0 );
+		panel.position.set( side < 0 ? centreA : centreB, HEIGHT - 0.02, 0 );
 		panel.name = `panel ${name}`;
 		statics.add( panel );
-		// Cone half-angle 0.5 rad from 2.9 m: a disc of radius 1.58 on the floor, inside the room.
-		const spot = new THREE.SpotLight( color, 25, 0, 0.5, 0, 2 );
-		spot.position.set( x, HEIGHT - 0.1, 0 );
-		spot.target.position.set( x, 0, 0 );
-		scene.add( spot, spot.target );
+		// The lamp: a sconce on the shared wall, 0.05 m in front of it, shining straight away from
+		// it with a cone 83° wide: every ray heads away from the wall, and the room is lit up to it.
+		const lamp = new THREE.SpotLight( color, LAMP_INTENSITY, 0, LAMP_ANGLE, 0.5, 2 );
+		lamp.position.set( side * ( HALF + 0.05 ), LAMP_HEIGHT, 0 );
+		lamp.target.position.set( side * LENGTH, LAMP_HEIGHT, 0 );
+		lamp.name = `lamp ${name}`;
+		// Its bulb, so the bright patch it throws on the ceiling has a visible source.
+		const bulb = new THREE.Mesh( new THREE.SphereGeometry( 0.05, 12, 6 ), new THREE.MeshBasicMaterial( { color } ) );
+		bulb.position.copy( lamp.position );
+		bulb.name = `bulb ${name}`;
+		scene.add( lamp, lamp.target, bulb );
 
 	}
 
@@ -93,7 +105,7 @@ export function createTwoRooms(): TwoRooms {
 		zones: [ { name: 'A', probes: probesA, bounds: boundsA }, { name: 'B', probes: probesB, bounds: boundsB } ],
 		dispose() {
 
-			statics.traverse( ( object ) => {
+			scene.traverse( ( object ) => {
 
 				const mesh = object as THREE.Mesh;
 				if ( mesh.isMesh !== true ) return;

@@ -1,5 +1,6 @@
 import * as THREE from 'three';
 import { loadCharacter, type Character } from './character.js';
+import { screenBox } from './screenBox.js';
 import type { Viewer } from './Viewer.js';
 
 /** The walk of a page's character. */
@@ -11,13 +12,15 @@ export interface WalkOptions {
 	height: number;
 	/** Seconds per loop of the path. Default 30. */
 	loopSeconds?: number;
+	/** Where a white test ball stands when the page has no `ball=x,y,z` (default: no ball). */
+	ball?: number[];
 
 }
 
 /**
  * What moves in a scene page and is lit by the probes one object at a time: the character walking
  * its loop (the Fox, or a stand-in), the extra spheres of `spheres=N` following it, and the white
- * test ball of `ball=x,y,z`, which stays put. None of them appears in the captures.
+ * test ball (`ball=x,y,z`, or the page's), which stays put. None of them appears in the captures.
  */
 export class DynamicObjects {
 
@@ -55,7 +58,7 @@ export class DynamicObjects {
 
 	}
 
-	private constructor( viewer: Viewer, { path, height, loopSeconds = 30 }: WalkOptions, character: Character | null ) {
+	private constructor( viewer: Viewer, { path, height, loopSeconds = 30, ball: pageBall }: WalkOptions, character: Character | null ) {
 
 		this.path = path;
 		this.height = height;
@@ -73,12 +76,13 @@ export class DynamicObjects {
 
 		}
 
-		if ( viewer.query.ball ) {
+		const at = viewer.query.ball ?? pageBall;
+		if ( at ) {
 
 			// A white, rough test ball that stays put: it shows the probe light at one point.
 			const material = new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1 } );
 			const ball = new THREE.Mesh( new THREE.SphereGeometry( height * 0.5, 48, 24 ), material );
-			ball.position.fromArray( viewer.query.ball );
+			ball.position.fromArray( at );
 			ball.name = 'test ball';
 			this.ball = ball;
 			viewer.scene.add( ball );
@@ -140,24 +144,5 @@ export class DynamicObjects {
 		return screenBox( this.ball ?? new THREE.Object3D(), camera, canvas );
 
 	}
-
-}
-
-/** An object's bounding box projected to the canvas, in CSS pixels: [ left, top, right, bottom ]. */
-function screenBox( object: THREE.Object3D, camera: THREE.Camera, canvas: HTMLCanvasElement ): number[] {
-
-	const box = new THREE.Box3().setFromObject( object );
-	const rect = canvas.getBoundingClientRect();
-	let left = Infinity, top = Infinity, right = - Infinity, bottom = - Infinity;
-	for ( let i = 0; i < 8; i ++ ) {
-
-		const corner = new THREE.Vector3( i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z );
-		corner.project( camera );
-		const x = ( corner.x + 1 ) / 2 * rect.width, y = ( 1 - corner.y ) / 2 * rect.height;
-		left = Math.min( left, x ); right = Math.max( right, x ); top = Math.min( top, y ); bottom = Math.max( bottom, y );
-
-	}
-
-	return [ left, top, right, bottom ];
 
 }

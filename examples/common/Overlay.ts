@@ -1,14 +1,27 @@
+/** One line of a page's legend: its text and, optionally, the CSS colour of its ring swatch. */
+export interface LegendEntry {
+
+	text: string;
+	swatch?: string;
+
+}
+
 /**
- * On-page status, progress bar, notices and errors: a demo must say what is wrong on screen,
- * not only in the console.
+ * On-page status, progress bar, notices, errors and a legend: a demo must say what is wrong on
+ * screen, not only in the console. The styles are in main.css (ids below).
  */
 export class Overlay {
 
-	private readonly statusElement = element( 'status', 'position:absolute;bottom:8px;left:8px;white-space:pre;font:12px/1.4 ui-monospace,monospace;color:#ddd;text-shadow:0 0 3px #000' );
-	private readonly bar = element( 'progress', 'position:absolute;top:0;left:0;height:4px;width:0;background:#8cf;transition:width .1s' );
-	private readonly label = element( 'progress-label', 'position:absolute;top:8px;left:50%;transform:translateX(-50%);font:13px system-ui,sans-serif;color:#8cf' );
-	private readonly noticeElement = element( 'notice', 'position:absolute;bottom:8px;right:8px;max-width:40%;font:13px system-ui,sans-serif;color:#fc6;text-align:right' );
-	private readonly errorElement = element( 'error', 'position:absolute;top:40%;left:10%;right:10%;text-align:center;font:16px system-ui,sans-serif;color:#f66;text-shadow:0 0 4px #000' );
+	/** Bottom left: the legend above the status text. */
+	private readonly hud = element( 'hud' );
+	private readonly legendElement = element( 'legend', this.hud );
+	private readonly statusElement = element( 'status', this.hud );
+	/** The progress block in the middle of the page: a label above a bar. */
+	private readonly progressElement = element( 'progress' );
+	private readonly label = element( 'progress-label', this.progressElement );
+	private readonly bar = element( 'progress-bar', element( 'progress-track', this.progressElement ) );
+	private readonly noticeElement = element( 'notice' );
+	private readonly errorElement = element( 'error' );
 
 	/** The bottom-left status text. */
 	status( text: string ): void {
@@ -17,10 +30,11 @@ export class Overlay {
 
 	}
 
-	/** A progress bar (fraction 0..1) with a label; done at 1. */
+	/** A progress bar (fraction 0..1) with a label; hidden at 1. */
 	progress( text: string, fraction: number ): void {
 
-		this.bar.style.width = fraction >= 1 ? '0' : `${( 100 * fraction ).toFixed( 1 )}%`;
+		this.progressElement.style.display = fraction >= 1 ? 'none' : '';
+		this.bar.style.width = `${( 100 * Math.max( 0, Math.min( 1, fraction ) ) ).toFixed( 1 )}%`;
 		this.label.textContent = fraction >= 1 ? '' : text;
 
 	}
@@ -39,15 +53,38 @@ export class Overlay {
 
 	}
 
+	/**
+	 * What the picture shows (bottom left, above the status): one line per entry, each with an optional
+	 * CSS colour swatch. Shown with `hide=gui` too — it changes only when the page's state does.
+	 */
+	legend( entries: readonly LegendEntry[] ): void {
+
+		this.legendElement.replaceChildren( ...entries.map( ( { text, swatch } ) => {
+
+			const line = document.createElement( 'div' );
+			if ( swatch ) {
+
+				const mark = document.createElement( 'span' );
+				mark.className = 'swatch';
+				mark.style.borderColor = swatch;
+				line.appendChild( mark );
+
+			}
+
+			line.appendChild( document.createTextNode( text ) );
+			return line;
+
+		} ) );
+
+	}
+
 }
 
-function element( id: string, style: string ): HTMLDivElement {
+function element( id: string, parent: HTMLElement = document.body ): HTMLDivElement {
 
 	const div = document.createElement( 'div' );
 	div.id = id;
-	div.style.cssText = style;
-	div.style.pointerEvents = 'none';
-	document.body.appendChild( div );
+	parent.appendChild( div );
 	return div;
 
 }

@@ -6,6 +6,7 @@ import { GridInterpolator } from 'three-capture-lighting/math';
 import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
 import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { withoutAmbientStandIns } from './ambientStandIns.js';
+import { CaptureProgress } from './CaptureProgress.js';
 import { download, fileName } from './download.js';
 import type { DynamicObjects } from './DynamicObjects.js';
 import { createPanel } from './gui.js';
@@ -133,6 +134,8 @@ export class ProbeVolumeDemo implements EditableVolume {
 
 		if ( settings.interpolation === 'trilinear' && ! this.trilinear ) settings.interpolation = 'tetrahedral';
 		this.applyGuard();
+		// What moves is added before any capture: a volume hides the objects it lights while it
+		// captures, so the fox never ends up in its own probes.
 		this.setup.addObjects( this.activeVolume );
 		this.viewer.report.probes = this.volume.count;
 		this.gui?.controllersRecursive().forEach( ( controller ) => controller.updateDisplay() );
@@ -146,29 +149,28 @@ export class ProbeVolumeDemo implements EditableVolume {
 		this.capturing = true;
 		const start = performance.now();
 		const { settings, overlay, report } = this.viewer;
+		const progress = new CaptureProgress( overlay, `at ${settings.resolution}²`, settings.bounces + 1 );
 		try {
 
 			const options: CaptureBouncesOptions = {
 				resolution: settings.resolution, indices, deringing: settings.deringing, nonNegative: settings.nonNegative,
+				// The objects are added to the active volume, which the capture hides; with the trilinear
+				// baseline active, the tetrahedral volume captured here does not know them: excluded by hand.
 				exclude: [ this.viewer.helpers, ...this.objects.list ],
-				onProgress: ( done: number, total: number ) => {
-
-					overlay.progress( `capturing ${done} / ${total} probes at ${settings.resolution}²`, done / total );
-
-				},
+				onProgress: ( done: number, total: number ) => progress.probes( done, total ),
 				bounces: settings.bounces,
-				onPass: ( pass: number ) => overlay.progress( `bounce pass ${pass} / ${settings.bounces} done`, 1 ),
+				onPass: ( pass: number ) => progress.passDone( pass ),
 			};
 			// The bounces replace the scenes' faint emissive stand-in for indirect light.
 			if ( settings.bounces > 0 ) await withoutAmbientStandIns( this.viewer.scene, () => this.setup.capture( this.volume, options ) );
 			else await this.setup.capture( this.volume, options );
 			if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
 			report.captureMs = performance.now() - start;
-			overlay.progress( '', 1 );
 			this.updateMarkers();
 
 		} finally {
 
+			progress.done();
 			this.capturing = false;
 
 		}

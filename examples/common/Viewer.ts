@@ -73,8 +73,9 @@ export class Viewer {
 		this.controls.update();
 		this.scene.add( this.helpers );
 
+		// main.css places the title between the stats and the panel, or hides it for screenshots.
 		if ( ! this.query.hideGui ) document.body.appendChild( this.stats.dom );
-		else document.body.classList.add( 'no-ui' ); // screenshots for tests: no text that changes
+		document.body.classList.add( this.query.hideGui ? 'no-ui' : 'with-panel' ); // no-ui: no text that changes
 		window.addEventListener( 'resize', () => this.resize() );
 		window.addEventListener( 'error', ( event ) => this.fail( event.message ) );
 		window.addEventListener( 'unhandledrejection', ( event ) => this.fail( String( event.reason?.message ?? event.reason ) ) );
@@ -87,6 +88,7 @@ export class Viewer {
 	fail( message: string ): void {
 
 		this.report.error = message;
+		this.overlay.progress( '', 1 );
 		this.overlay.error( message );
 
 	}

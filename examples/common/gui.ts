@@ -61,6 +61,8 @@ export function createPanel( settings: DemoSettings, layouts: ProbeLayout[], act
 	edit.add( { remove: () => actions.removeSelectedProbe() }, 'remove' ).name( 'delete selected probe' );
 	edit.add( { export: () => actions.exportLayout() }, 'export' ).name( 'export layout JSON' );
 	edit.add( { export: () => actions.exportBaked() }, 'export' ).name( 'export baked volume (.lpv)' );
+	// On a narrow page the open panel would cover the title (main.css moves the title under it).
+	if ( window.innerWidth < 900 ) gui.close();
 	return gui;
 
 }
