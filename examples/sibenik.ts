@@ -50,8 +50,10 @@ async function init(): Promise<void> {
 	} );
 	await demo.start();
 
-	// The fox walks through patches of sun: once it is loaded, let it receive the sun's shadow.
+	// The fox walks through patches of sun: once it is loaded, let it receive the sun's shadow and
+	// cast its own (it is hidden in captures, so its shadow never reaches the probes).
 	scene.traverse( ( object ) => { object.receiveShadow = true; } );
+	objects.character?.object.traverse( ( object ) => { object.castShadow = true; } );
 
 	viewer.animate( ( time, delta ) => {
 

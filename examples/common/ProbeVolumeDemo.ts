@@ -1,10 +1,9 @@
 import * as THREE from 'three';
 import type GUI from 'lil-gui';
-import { LightProbeVolume, VisibilityGuard, type CaptureBouncesOptions } from 'three-capture-lighting';
+import {
+	LightProbeVolume, LightProbeVolumeExporter, LightProbeVolumeLoader, VisibilityGuard, type CaptureBouncesOptions,
+} from 'three-capture-lighting';
 import { GridInterpolator } from 'three-capture-lighting/math';
-// From 'three-capture-lighting' once the main entry exports them (issue 13).
-import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
-import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { withoutAmbientStandIns } from './ambientStandIns.js';
 import { CaptureProgress } from './CaptureProgress.js';
 import { download, fileName } from './download.js';
@@ -194,7 +193,9 @@ export class ProbeVolumeDemo implements EditableVolume {
 		const { settings, overlay, report } = this.viewer;
 		const volume = this.activeVolume;
 		applyViewMode( volume, objects, settings.view, this.hemisphere );
-		this.markers.show( settings.showProbes, settings.showCells, this.volume, this.objects.characterCentre( this.characterCentre ) );
+		// The cell the fox itself is lit from (its anchor), or the centre of the walk without a fox.
+		const highlighted = this.objects.character?.object ?? this.objects.characterCentre( this.characterCentre );
+		this.markers.show( settings.showProbes, settings.showCells, this.volume, highlighted );
 		const cells = `${volume.interpolator.cellCount} ${settings.interpolation === 'trilinear' ? 'boxes' : 'cells'}`;
 		overlay.status( `${settings.layout} — ${settings.interpolation}\n${volume.count} probes, ${cells}\n`
 			+ `capture ${report.captureMs.toFixed( 0 )} ms at ${settings.resolution}²\n${this.viewer.fps.toFixed( 0 )} fps` );
