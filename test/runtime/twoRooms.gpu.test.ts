@@ -180,7 +180,7 @@ describe.skipIf( ! ctx.renderer )( `two rooms sharing a wall: red room A, blue r
 
 	} );
 
-	it( 'rendered: a white sphere in room B by the wall, lit by the probes and room B's own blue lamp, has red in its pixels without zones and guard and none with either', () => {
+	it( 'rendered: a white sphere in room B by the wall, lit by the probes and by the blue lamp of room B, has red in its pixels without zones and guard and none with either', () => {
 
 		// The camera is under room B's ceiling looking down at the sphere, so the pixels at its
 		// centre are the upward-facing side, which room A's probes light red from their panel.
