@@ -36,8 +36,8 @@ export type {
  * Light probes placed anywhere, captured from the scene and blended per object every frame —
  * the paper's pipeline in three.js. Probe positions are tetrahedralized (a planar triangulation
  * when they all lie in one plane); each registered object finds the cell around it, blends its
- * probes' SH with barycentric weights, and its patched `MeshStandardMaterial` shades
- * E(n) = nᵀMn from them.
+ * probes' SH with barycentric weights, and its patched material (Standard, Physical, Phong,
+ * Lambert, Toon) shades E(n) = nᵀMn from them.
  *
  * ```js
  * const volume = new LightProbeVolume( { positions } );
@@ -400,17 +400,17 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * Lights an object with this volume. A mesh or a group (a loaded character: all its meshes) is
-	 * one object in `options.mode` (default `'object'`): its `MeshStandardMaterial`s are patched (a
-	 * material shared with an object lit separately is cloned for this one) and `update()` blends
-	 * the probes at its world position every frame. A `Scene` (or any object with `mode: 'auto'`)
-	 * is a level: every mesh below it not lit yet, each as it suits — see {@link ProbeLighting};
-	 * mark objects with `userData.probeLighting` or `options.choose`. Call it again after adding
-	 * objects to the level; `add( object )` later takes over from what `add( scene )` chose for it.
+	 * Lights an object with this volume. A mesh or a group (a loaded character: all its meshes) is one object in
+	 * `options.mode` (default `'object'`): its Standard, Physical, Phong, Lambert and Toon materials are patched (one
+	 * shared with an object lit separately is cloned) and `update()` blends the probes at its world position every
+	 * frame; an object with none of them is a TypeError. A `Scene` (or `mode: 'auto'`) is a level: every mesh below
+	 * it not lit yet, each as it suits — see {@link ProbeLighting}; mark objects with `userData.probeLighting` or
+	 * `options.choose`. Meshes with a `ShaderMaterial` or node material are left with one `console.warn` per call,
+	 * unlit ones (`MeshBasicMaterial`) silently. Call it again after adding objects to the level; `add( object )`
+	 * later takes over from what `add( scene )` chose for it.
 	 *
-	 * Add what moves (characters, vehicles) before `capture()`: only objects lit as `'dynamic'`
-	 * when capturing are hidden from the probes. `add( scene )` finds skinned meshes and what hangs
-	 * from bones by itself; mark other moving objects `'dynamic'`, or add them first.
+	 * Add what moves (characters, vehicles) before `capture()`: only objects lit as `'dynamic'` when capturing are
+	 * hidden from the probes. `add( scene )` finds skinned meshes and what hangs from bones; mark other movers `'dynamic'`.
 	 */
 	add( object: Object3D, options: AddOptions = {} ): this {
 

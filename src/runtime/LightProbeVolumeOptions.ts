@@ -90,10 +90,11 @@ export interface LightProbeVolumeBounceOptions {
 
 	/**
 	 * The static meshes lit by the previous pass's probes during the bounce passes. Default: every
-	 * visible `Mesh` of the scene with a `MeshStandardMaterial`/`MeshPhysicalMaterial` that the
-	 * capture would draw — not skinned or instanced, not inside an object registered with
-	 * `volume.add()` or listed in `exclude`, not rejected by `filter`, on a layer the cube camera
-	 * sees, and with no probe-patched material already (such a mesh has probe light of its own).
+	 * visible `Mesh` of the scene with a material that takes probe light (Standard, Physical, Phong,
+	 * Lambert, Toon) that the capture would draw — not skinned or instanced, not inside an object
+	 * registered with `volume.add()` or listed in `exclude`, not rejected by `filter`, on a layer
+	 * the cube camera sees, and with no probe-patched material already (such a mesh has probe
+	 * light of its own).
 	 * The scenery this volume lights itself (what `add( scene )` registered, large objects) takes
 	 * the previous pass's light through its own lighting instead.
 	 */
@@ -178,7 +179,11 @@ export interface AddProbeOptions {
 
 }
 
-/** Options of `LightProbeVolume.add`. */
+/**
+ * Options of `LightProbeVolume.add`. Probe light goes into `MeshStandardMaterial`,
+ * `MeshPhysicalMaterial`, `MeshPhongMaterial` (what OBJLoader and MTLLoader make),
+ * `MeshLambertMaterial` and `MeshToonMaterial`; other materials are left as they are.
+ */
 export interface AddOptions {
 
 	/** Shade this object's irradiance per vertex instead of per pixel. Default false. */
@@ -211,7 +216,11 @@ export interface AddOptions {
 	 *   pixel (see `ProbeTextureLighting`) — for large objects whose tessellation is coarse.
 	 * - `'auto'` (default for a `Scene`): a whole level — every mesh below the object not lit yet,
 	 *   each in the mode that suits it (see {@link ProbeLighting}); `choose` and
-	 *   `userData.probeLighting` override it per object.
+	 *   `userData.probeLighting` override it per object. Meshes whose materials take no probe
+	 *   light are skipped: unlit ones (`MeshBasicMaterial`, `MeshNormalMaterial`,
+	 *   `MeshMatcapMaterial`) silently, those with their own shaders (`ShaderMaterial`, node
+	 *   materials) with one `console.warn` per call that counts them (mark them `'none'` to
+	 *   silence it).
 	 *
 	 * Vertex and texture modes sample the volume per vertex / texel, each point in the zone whose
 	 * bounds hold it (or the `zone` given), without the visibility guard,

@@ -3,6 +3,7 @@ import type { ProbeField } from './ProbeField.js';
 import { ProbeVolumeTexture } from './ProbeVolumeTexture.js';
 import { meshWorldBox } from './chooseLighting.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { isProbeLitMaterial } from './probeLitMaterials.js';
 
 /** Options of {@link MeshTextureLighting}. */
 export interface MeshTextureLightingOptions {
@@ -23,9 +24,9 @@ const _box = new Box3();
 /**
  * Per-pixel probe light for one mesh of a level (`add( scene )`'s `'texture'` choice): a
  * {@link ProbeVolumeTexture} over the mesh's own world bounds, read by patched clones of its
- * `MeshStandardMaterial`s. Unlike `ProbeTextureLighting`, which lights an object with everything
- * below it, the mesh's children are left alone — they are lit (or not) on their own. The same
- * texture and shading as `ProbeTextureLighting` on a mesh without children.
+ * materials that take probe light. Unlike `ProbeTextureLighting`, which lights an object with
+ * everything below it, the mesh's children are left alone — they are lit (or not) on their own.
+ * The same texture and shading as `ProbeTextureLighting` on a mesh without children.
  */
 export class MeshTextureLighting {
 
@@ -45,7 +46,7 @@ export class MeshTextureLighting {
 	private fieldChanged = false;
 
 	/**
-	 * @param mesh A mesh with a `MeshStandardMaterial` and a position attribute, in world position.
+	 * @param mesh A mesh with a material that takes probe light and a position attribute, in world position.
 	 * @param field The probes (checked by the caller).
 	 * @param options See {@link MeshTextureLightingOptions} (checked by the caller).
 	 */
@@ -69,7 +70,7 @@ export class MeshTextureLighting {
 		const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 		const replacement = materials.map( ( material ) => {
 
-			if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return material;
+			if ( ! isProbeLitMaterial( material ) ) return material;
 			// A clone: the original may light other meshes, outside this texture's box.
 			const copy = material.clone();
 			patchMaterial( copy, { source: 'texture', uniforms: this.uniforms } );

@@ -3,6 +3,7 @@ import { assertProbeField, assertUsableProbeField, type ProbeField } from './Pro
 import { ProbeVolumeTexture, checkVolumeTextureOptions, type ProbeVolumeTextureOptions } from './ProbeVolumeTexture.js';
 import { assertOptions } from '../validate.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
 
 /** Options of {@link ProbeTextureLighting}: the texture's plus intensity and padding. */
 export interface ProbeTextureLightingOptions extends ProbeVolumeTextureOptions {
@@ -21,8 +22,9 @@ const _padding = new Vector3();
 /**
  * Per-pixel probe light for a large object (a floor, a long wall, a whole level chunk): a
  * {@link ProbeVolumeTexture} over the object's world bounding box, sampled at each fragment's world
- * position by the object's patched `MeshStandardMaterial`s (clones, restored by `dispose()`).
- * Independent of tessellation, unlike {@link ProbeVertexLighting}; responds to normal maps.
+ * position by patched clones of the object's materials that take probe light (Standard, Physical,
+ * Phong, Lambert, Toon; restored by `dispose()`). Independent of tessellation, unlike
+ * {@link ProbeVertexLighting}; responds to normal maps.
  *
  * ```js
  * const lighting = new ProbeTextureLighting( floor, volume, { texelSize: 0.5 } );
@@ -49,7 +51,7 @@ export class ProbeTextureLighting {
 	private fieldChanged = false;
 
 	/**
-	 * @param object A mesh or group with `MeshStandardMaterial`s, in world position (its bounds are read now).
+	 * @param object A mesh or group with materials that take probe light, in world position (its bounds are read now).
 	 * @param field The probes, e.g. a `LightProbeVolume`.
 	 * @param options See {@link ProbeTextureLightingOptions}.
 	 */
@@ -88,7 +90,7 @@ export class ProbeTextureLighting {
 			let changed = false;
 			const replacement = materials.map( ( material ) => {
 
-				if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return material;
+				if ( ! isProbeLitMaterial( material ) ) return material;
 				// A clone: the original may light other objects, outside this texture's box.
 				const copy = material.clone();
 				patchMaterial( copy, { source: 'texture', uniforms: this.uniforms } );
@@ -106,7 +108,7 @@ export class ProbeTextureLighting {
 		if ( this.clones.length === 0 ) {
 
 			this.volumeTexture.dispose();
-			throw new TypeError( `${where}: object has no mesh with a MeshStandardMaterial or MeshPhysicalMaterial to light.` );
+			throw new TypeError( `${where}: object has no mesh with a ${PROBE_LIT_MATERIALS} to light.` );
 
 		}
 

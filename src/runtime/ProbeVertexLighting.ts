@@ -4,6 +4,7 @@ import { irradianceAt } from '../sh/irradiance.js';
 import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
 import { assertOptions } from '../validate.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
 
 /** Options of {@link ProbeVertexLighting}. */
 export interface ProbeVertexLightingOptions {
@@ -50,8 +51,9 @@ const SH_NAMES = [ 0, 1, 2, 3, 4, 5, 6 ].map( ( i ) => `probeSH${i}` );
 /**
  * Probe light per vertex for a large mesh (a floor, a long wall): the tetrahedral field is sampled
  * at every vertex's world position — not once per object — so the light changes across the mesh.
- * The mesh's `MeshStandardMaterial`s are replaced by patched clones (restored by `dispose()`) that
- * read vertex attributes written into the mesh's geometry.
+ * The mesh's materials that take probe light (Standard, Physical, Phong, Lambert, Toon) are
+ * replaced by patched clones (restored by `dispose()`) that read vertex attributes written into
+ * the mesh's geometry.
  *
  * The geometry must belong to this mesh alone (the light depends on world positions): share-nothing
  * with `mesh.geometry = mesh.geometry.clone()` first. Static or occasionally moved meshes only:
@@ -160,7 +162,7 @@ export class ProbeVertexLighting {
 		const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 		const replaced = materials.map( ( material ) => {
 
-			if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return material;
+			if ( ! isProbeLitMaterial( material ) ) return material;
 			// A clone: the original may be shared with meshes that have no probe attributes.
 			const copy = material.clone();
 			patchMaterial( copy, { source: output === 'irradiance' ? 'vertexIrradiance' : 'vertexSH', uniforms: this.uniforms } );
@@ -171,7 +173,7 @@ export class ProbeVertexLighting {
 		if ( this.clones.length === 0 ) {
 
 			this.removeAttributes();
-			throw new TypeError( `${where}: mesh has no MeshStandardMaterial or MeshPhysicalMaterial to light.` );
+			throw new TypeError( `${where}: mesh has no ${PROBE_LIT_MATERIALS} to light.` );
 
 		}
 

@@ -8,6 +8,7 @@ import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.j
 import type { ProbeField } from './ProbeField.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
 import { getProbeVolumeUniforms } from './patchMaterial.js';
+import { PROBE_LIT_MATERIALS, isProbeLitMaterial, meshMaterials } from './probeLitMaterials.js';
 
 /**
  * Options of {@link captureBounces}: the capture options of `LightProbeVolume.capture`, whose
@@ -282,10 +283,10 @@ function isLightable( mesh: Mesh ): boolean {
 
 }
 
-function standardMaterials( mesh: Mesh ): Material[] {
+/** The materials of a mesh that a bounce pass lights (see `isProbeLitMaterial`). */
+function probeLitMaterials( mesh: Mesh ): Material[] {
 
-	const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
-	return materials.filter( ( material ) => ( material as { isMeshStandardMaterial?: boolean } )?.isMeshStandardMaterial === true );
+	return meshMaterials( mesh ).filter( isProbeLitMaterial );
 
 }
 
@@ -309,11 +310,10 @@ function checkMeshes( where: string, meshes: readonly Mesh[] ): Mesh[] {
 
 		}
 
-		const materials = standardMaterials( mesh );
+		const materials = probeLitMaterials( mesh );
 		if ( materials.length === 0 ) {
 
-			throw new TypeError( `${where}: options.staticMeshes[${i}]${name} has no MeshStandardMaterial or MeshPhysicalMaterial `
-				+ 'to light.' );
+			throw new TypeError( `${where}: options.staticMeshes[${i}]${name} has no ${PROBE_LIT_MATERIALS} to light.` );
 
 		}
 
@@ -342,7 +342,7 @@ function findStaticMeshes( volume: LightProbeVolume, scene: Scene, capture: Ligh
 		const mesh = object as Mesh;
 		if ( ! isLightable( mesh ) ) return;
 		if ( ! seen.some( ( layers ) => mesh.layers.test( layers ) ) ) return;
-		const materials = standardMaterials( mesh );
+		const materials = probeLitMaterials( mesh );
 		if ( materials.length === 0 || materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) return;
 		for ( let node: Object3D | null = mesh; node !== null; node = node.parent ) {
 

@@ -1,4 +1,4 @@
-import { Box3, Vector3, type BufferAttribute, type Material, type Mesh, type Object3D } from 'three';
+import { Box3, Vector3, type BufferAttribute, type Mesh, type Object3D } from 'three';
 import { describeValue } from '../validate.js';
 import type { AddOptions, ProbeLighting, ProbeLightingChoice } from './LightProbeVolumeOptions.js';
 
@@ -92,14 +92,6 @@ export function automaticLighting( mesh: Mesh, context: MeshContext ): ProbeLigh
 	}
 
 	return 'texture';
-
-}
-
-/** Whether a mesh has a `MeshStandardMaterial` / `MeshPhysicalMaterial` (the materials probe light patches). */
-export function hasStandardMaterial( mesh: Mesh ): boolean {
-
-	const materials: ( Material | null )[] = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
-	return materials.some( ( material ) => ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial === true );
 
 }
 

@@ -11,6 +11,7 @@ import { MAX_WEIGHTS, type ProbeWeighting, type VisibilityCache } from './ProbeW
 import type { ProbeField } from './ProbeField.js';
 import type { ProbeZones } from './ProbeZones.js';
 import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
+import { PROBE_LIT_MATERIALS, hasProbeLitMaterial, isProbeLitMaterial, meshMaterials } from './probeLitMaterials.js';
 
 /*
  * The objects a `LightProbeVolume` lights: registration in its three modes (object, vertex,
@@ -86,11 +87,12 @@ const BLEND_SQUARES = 28 * SH_LIMIT * SH_LIMIT;
 
 /**
  * Builds the entry that lights `object` in the mode of `options`: the large-object lightings, or
- * the object's `MeshStandardMaterial`s patched — in place when only this object uses them, else as
- * clones (uniforms live on the material). The caller pushes it into `lit` (the other entries,
- * whose patched materials this one must not take over); an object-mode entry then needs one
- * {@link updateLitObject}.
+ * the object's materials that take probe light (see `isProbeLitMaterial`) patched — in place when
+ * only this object uses them, else as clones (uniforms live on the material). The caller pushes
+ * it into `lit` (the other entries, whose patched materials this one must not take over); an
+ * object-mode entry then needs one {@link updateLitObject}.
  * @param field The probe field of the large-object modes.
+ * @throws TypeError, for `add( object )` itself, when no mesh of the object takes probe light.
  */
 export function createLitObject(
 	object: Object3D, options: AddOptions, fixedZone: number, field: () => ProbeField, lit: readonly LitObject[],
@@ -98,6 +100,7 @@ export function createLitObject(
 ): LitObject {
 
 	checkAddOptions( options );
+	if ( scope.root === null ) assertProbeLitObject( object );
 	const mode = options.mode ?? 'object';
 	const hidden = options.hideInCaptures ?? mode === 'object';
 	const entry: LitObject = {
@@ -232,6 +235,28 @@ export function reportBadBlend( where: string, entry: LitObject, sh: Float32Arra
 
 }
 
+/**
+ * `add( object )` of something whose materials all take no probe light (a lamp's
+ * `MeshBasicMaterial`, a `ShaderMaterial`) is a mistake, not a no-op: an Error says so before
+ * anything is patched. An object that draws nothing (no material at all) has nothing to light.
+ */
+function assertProbeLitObject( object: Object3D ): void {
+
+	const types = new Set<string>();
+	let found = false;
+	object.traverse( ( node ) => {
+
+		if ( found || ( node as Mesh ).isMesh !== true ) return;
+		found = hasProbeLitMaterial( node as Mesh );
+		for ( const material of meshMaterials( node as Mesh ) ) types.add( material.type );
+
+	} );
+	if ( found || types.size === 0 ) return;
+	throw new TypeError( `LightProbeVolume.add: ${describeObject( object )} has only ${[ ...types ].join( ', ' )}; probe light `
+		+ `needs a mesh with a ${PROBE_LIT_MATERIALS} (the others are unlit or shade themselves).` );
+
+}
+
 /** Checks an argument is a three.js `Object3D`. */
 export function assertObject3D( where: string, object: unknown ): asserts object is Object3D {
 
@@ -311,7 +336,8 @@ function createLargeLightings(
 			const visit = ( child: Object3D ) => {
 
 				const mesh = child as Mesh;
-				if ( mesh.isMesh !== true ) return;
+				// Below a group, meshes that take no probe light (a lamp's bulb) are left as they are.
+				if ( mesh.isMesh !== true || ( subtree && ! hasProbeLitMaterial( mesh ) ) ) return;
 				large.push( new ProbeVertexLighting( mesh, field(), { intensity, output: options.vertexOutput } ) );
 
 			};
@@ -333,8 +359,8 @@ function createLargeLightings(
 }
 
 /**
- * Patches the `MeshStandardMaterial`s of an object-mode entry. Uniforms live on the material: one
- * patched for another entry (or by the user) gets a clone of its own, which replaces it on the mesh.
+ * Patches the materials of an object-mode entry that take probe light. Uniforms live on the material:
+ * one patched for another entry (or by the user) gets a clone of its own, which replaces it on the mesh.
  */
 function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined, lit: readonly LitObject[] ): void {
 
@@ -360,7 +386,7 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 		materials.forEach( ( material, i ) => {
 
 			// A null or undefined slot is drawn by nothing (three skips it): nothing to patch.
-			if ( ( material as { isMeshStandardMaterial?: boolean } | null )?.isMeshStandardMaterial !== true ) return;
+			if ( ! isProbeLitMaterial( material ) ) return;
 			if ( owned.has( material ) || ( getProbeVolumeUniforms( material ) !== null && ! entry.patched.includes( material ) ) ) {
 
 				const copy = material.clone();

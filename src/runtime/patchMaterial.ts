@@ -6,6 +6,7 @@ import {
 	probeVolumeTexturePars, probeVolumeVertexSHPars,
 } from '../shaders.generated.js';
 import { assertNumber, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
+import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
 
 /** The uniforms a patched material reads; write them yourself, or let a `LightProbeVolume` do it. */
 export interface ProbeVolumeUniforms {
@@ -73,24 +74,26 @@ interface PatchedMaterial extends Material {
 }
 
 /**
- * Makes a `MeshStandardMaterial` or `MeshPhysicalMaterial` lit by probe SH: the paper's
- * E(n) = nᵀMn, with one 4x4 M per colour channel in uniforms, is added to three's indirect
- * diffuse irradiance (where a `LightProbe`'s term goes). All patched materials with the same
- * options share one shader program; only uniforms differ per object. A user `onBeforeCompile`
- * set before patching still runs. `options.source` swaps the per-object matrices for per-vertex
- * attributes or a 3D SH texture (large objects: see `ProbeVertexLighting`, `ProbeTextureLighting`).
+ * Makes a `MeshStandardMaterial`, `MeshPhysicalMaterial`, `MeshPhongMaterial`,
+ * `MeshLambertMaterial` or `MeshToonMaterial` lit by probe SH: the paper's E(n) = nᵀMn, with one
+ * 4x4 M per colour channel in uniforms, is added to three's indirect diffuse irradiance (where a
+ * `LightProbe`'s term goes; the material's own diffuse response shades it). All patched
+ * materials of one type with the same options share one shader program; only uniforms differ.
+ * A user `onBeforeCompile` set before patching still runs. `options.source` swaps the per-object
+ * matrices for per-vertex attributes or a 3D SH texture (large objects: see `ProbeVertexLighting`,
+ * `ProbeTextureLighting`).
  *
  * @returns The uniforms: fill `probeVolumeMatrices.value` with `irradianceMatrices( sh )`.
  */
 export function patchMaterial( material: Material, options: PatchMaterialOptions = {} ): ProbeVolumeUniforms {
 
-	const target = material as PatchedMaterial & { isMeshStandardMaterial?: boolean };
-	if ( ! target || target.isMeshStandardMaterial !== true ) {
+	if ( ! isProbeLitMaterial( material ) ) {
 
-		throw new TypeError( `patchMaterial: material must be a MeshStandardMaterial or MeshPhysicalMaterial, got ${( material as { type?: string } )?.type ?? typeof material}.` );
+		throw new TypeError( `patchMaterial: material must be a ${PROBE_LIT_MATERIALS}, got ${( material as { type?: string } )?.type ?? typeof material}.` );
 
 	}
 
+	const target = material as PatchedMaterial;
 	assertOptions( 'patchMaterial', 'options', options );
 	assertOptionalBoolean( 'patchMaterial', 'options.perVertex', options.perVertex );
 	if ( options.intensity !== undefined ) assertNumber( 'patchMaterial', 'options.intensity', options.intensity );
@@ -218,11 +221,13 @@ export function unpatchMaterial( material: Material ): void {
 
 }
 
-// Indirect diffuse irradiance is accumulated in `irradiance` by lights_fragment_begin; the probe
-// term joins it there (shaders/probeVolumeLights*.frag.glsl), before lights_fragment_end hands it
-// to RE_IndirectDiffuse — the same place and space (world normal, no π) as three's LightProbe
-// term. The texture variant takes the world position from the view-space one, as three's own
-// light-probe-grid path does: no extra varying.
+// Indirect diffuse irradiance is accumulated in `irradiance` by lights_fragment_begin (in the
+// Standard, Phong, Lambert and Toon shaders alike); the probe term joins it there
+// (shaders/probeVolumeLights*.frag.glsl), before lights_fragment_end hands it to
+// RE_IndirectDiffuse — the same place and space (world normal, no π) as three's LightProbe term.
+// The direct scale multiplies reflectedLight's direct terms, which all four declare. The texture
+// variant takes the world position from the view-space one, as three's own light-probe-grid path
+// does: no extra varying.
 
 const MAIN = 'void main() {';
 const LIGHTS = '#include <lights_fragment_begin>';

@@ -1,8 +1,9 @@
 import type { BufferGeometry, Material, Mesh, Object3D, SkinnedMesh } from 'three';
-import { automaticLighting, describeObject, hasStandardMaterial, readLightingMark } from './chooseLighting.js';
+import { automaticLighting, describeObject, readLightingMark } from './chooseLighting.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
 import { getProbeVolumeUniforms } from './patchMaterial.js';
+import { describeUnlitMeshes, hasProbeLitMaterial, missesProbeLight } from './probeLitMaterials.js';
 
 /*
  * What `LightProbeVolume.add( scene )` (mode 'auto') registers: a walk over the scene graph that
@@ -26,11 +27,14 @@ type Mark = ProbeLighting | 'none' | undefined;
 /**
  * The objects below `root` to light, parents before children. Skipped: objects already lit by
  * an entry of `lit` (with everything below when that entry covers its subtree), objects marked
- * `'none'` (with everything below), meshes without a `MeshStandardMaterial`, and meshes whose
- * material another volume or the user patched. A marked object is one plan covering its subtree
- * (`'vertex'`: one per mesh below it, per-vertex lighting being per mesh); a rig — skinned meshes
- * and their bones under one root with nothing static below it — is one `'dynamic'` plan for that
- * root; every other mesh gets the automatic choice for itself alone.
+ * `'none'` (with everything below), meshes without a material that takes probe light (see
+ * `isProbeLitMaterial`), and meshes whose material another volume or the user patched. A marked
+ * object is one plan covering its subtree (`'vertex'`: one per mesh below it, per-vertex lighting
+ * being per mesh); a rig — skinned meshes and their bones under one root with nothing static
+ * below it — is one `'dynamic'` plan for that root; every other mesh gets the automatic choice
+ * for itself alone. Meshes left unlit because their shaders are their own (`ShaderMaterial`, node
+ * materials: see `missesProbeLight`) get one `console.warn` for the call, once the plan is made;
+ * unlit built-in materials (`MeshBasicMaterial` lamps) are taken as meant and pass silently.
  * @throws RangeError for a bad mark; Error when a marked object has an object lit already below it.
  */
 export function planSceneLighting(
@@ -67,6 +71,7 @@ export function planSceneLighting(
 	} );
 	const rigs = findRigRoots( root, entries, markOf );
 	const plans: LightingPlan[] = [];
+	const unlit: Mesh[] = [];
 
 	const visit = ( node: Object3D, underBone: boolean ): void => {
 
@@ -79,7 +84,7 @@ export function planSceneLighting(
 			if ( mark === 'vertex' ) {
 
 				assertNothingLitBelow( where, node, mark, entries );
-				planVertexMeshes( where, node, plans );
+				planVertexMeshes( where, node, plans, unlit );
 				return;
 
 			}
@@ -88,6 +93,7 @@ export function planSceneLighting(
 
 				if ( mark !== undefined ) assertNothingLitBelow( where, node, mark, entries );
 				plans.push( { object: node, lighting: mark ?? 'dynamic', subtree: true } );
+				node.traverse( ( child ) => noteUnlit( child, unlit ) );
 				return;
 
 			}
@@ -99,6 +105,10 @@ export function planSceneLighting(
 				const context = { spacing, moving: underBone || skinned, sharedGeometry: ( uses.get( mesh.geometry ) ?? 0 ) > 1 };
 				plans.push( { object: mesh, lighting: automaticLighting( mesh, context ), subtree: false } );
 
+			} else {
+
+				noteUnlit( node, unlit );
+
 			}
 
 		}
@@ -109,26 +119,35 @@ export function planSceneLighting(
 	};
 
 	visit( root, moving );
+	if ( unlit.length > 0 ) console.warn( describeUnlitMeshes( where, unlit ) );
 	return plans;
 
 }
 
-/** A mesh `add( scene )` may light: a position attribute, a `MeshStandardMaterial`, none patched by someone else. */
+/** A mesh `add( scene )` may light: a position attribute, a material that takes probe light, none patched by someone else. */
 function isLightable( mesh: Mesh, owned: ReadonlySet<Material> ): boolean {
 
-	if ( mesh.geometry?.getAttribute( 'position' ) === undefined || ! hasStandardMaterial( mesh ) ) return false;
+	if ( mesh.geometry?.getAttribute( 'position' ) === undefined || ! hasProbeLitMaterial( mesh ) ) return false;
 	const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 	return ! materials.some( ( material ) => material && getProbeVolumeUniforms( material ) !== null && ! owned.has( material ) );
 
 }
 
-/** `'vertex'` on an object: each mesh below it with a `MeshStandardMaterial`, per vertex (skinned ones cannot be). */
-function planVertexMeshes( where: string, object: Object3D, plans: LightingPlan[] ): void {
+/** Adds `node` to `unlit` when it is a mesh whose own shaders keep the probe light out ({@link missesProbeLight}). */
+function noteUnlit( node: Object3D, unlit: Mesh[] ): void {
+
+	if ( ( node as Mesh ).isMesh === true && missesProbeLight( node as Mesh ) ) unlit.push( node as Mesh );
+
+}
+
+/** `'vertex'` on an object: each mesh below it with a material that takes probe light, per vertex (skinned ones cannot be). */
+function planVertexMeshes( where: string, object: Object3D, plans: LightingPlan[], unlit: Mesh[] ): void {
 
 	object.traverse( ( node ) => {
 
 		const mesh = node as Mesh & { isSkinnedMesh?: boolean; isInstancedMesh?: boolean };
-		if ( mesh.isMesh !== true || ! hasStandardMaterial( mesh ) ) return;
+		noteUnlit( mesh, unlit );
+		if ( mesh.isMesh !== true || ! hasProbeLitMaterial( mesh ) ) return;
 		if ( mesh.isSkinnedMesh === true || mesh.isInstancedMesh === true ) {
 
 			throw new RangeError( `${where}: ${describeObject( object )} is marked 'vertex', but ${describeObject( mesh )} below it is `
