@@ -34,6 +34,7 @@ export type { HighlightTarget } from './runtime/ProbeCellHighlight.js';
 
 // Objects managed by hand, and large objects lit per vertex or per texel (`add( object, { mode } )` uses these).
 export { patchMaterial, unpatchMaterial, getProbeVolumeUniforms } from './runtime/patchMaterial.js';
+export { isProbeLitMaterial } from './runtime/probeLitMaterials.js';
 export type { PatchMaterialOptions, ProbeVolumeUniforms, ProbeVolumeSource } from './runtime/patchMaterial.js';
 export { ProbeVertexLighting } from './runtime/ProbeVertexLighting.js';
 export type { ProbeVertexLightingOptions } from './runtime/ProbeVertexLighting.js';
