@@ -11,7 +11,9 @@
  *    global `THREE.LightProbe`, vs no probe, vs three's per-pixel `LightProbeGridWebGL`.
  * 4. Capture with a shadow-casting light (page bench/pages/captureShadows.ts): the demo's Basic room
  *    with its lamp casting shadows vs the same room without, and Sponza with its shadowed sun vs
- *    without; a diagnostic row redraws the shadow maps per cube face, as captures did before.
+ *    without; a floor row shades the same faces with the maps drawn beforehand, another times one
+ *    render of the maps, and a diagnostic row redraws the shadow maps per cube face, as captures
+ *    did before (bench/captureShadowsDecompose.ts splits the extra time further).
  *
  * The page is bench/pages/capture.ts, served by a Vite dev server started here; puppeteer calls
  * its functions and this file summarises their raw timings. Every timing ends in a GPU → CPU

@@ -2,8 +2,10 @@
  * Part 4 of bench/capture.bench.ts: probe captures of scenes lit by a shadow-casting light, with
  * and without its shadows, in the same run (page: bench/pages/captureShadows.ts). ProbeCapturer
  * draws the shadow maps once per capture, so shadows should cost little: goal ≤ 1.15× the same
- * room without shadows. A diagnostic row captures the way it was done before — three's default
- * `shadowMap.autoUpdate = true`, every cube face drawing every shadow map again.
+ * room without shadows. A floor row shades the same faces with the maps drawn beforehand (what is
+ * left is the receivers' shading), another times one render of the maps. A diagnostic row captures
+ * the way it was done before — three's default `shadowMap.autoUpdate = true`, every cube face
+ * drawing every shadow map again.
  */
 
 import { existsSync } from 'node:fs';
@@ -60,7 +62,7 @@ export async function captureShadows(
 
 		}
 
-		notes.push( `Shadows (4): the Basic room of the demo (scenes/basic.ts, ${basic.triangles} triangles), its PointLight lamp casting shadows into a 512² cube map (three's default size; the walls cast and receive), probes on its 4 × 4 × 4 grid; "no shadows" = the same scene with renderer.shadowMap.enabled and the lamp's castShadow false. Inside the closed room nothing stands between the lamp and the walls, so the SH do not change (Check column); the figure is what shadows cost a capture. ProbeCapturer draws the shadow maps at the first cube face of a capture and restores shadowMap.autoUpdate / needsUpdate after; the "per cube face" row renders the same probes with CubeCamera.update and three's default autoUpdate = true, as captures did before, then the same GPU projection. Captures with and without shadows alternate (order swapped every run) after a warm-up capture of each; figure = median over runs; "paired" = median of the per-run ratios; "browser CPU" = median CPU seconds of the Chromium process tree (and the bench process) per capture, which other processes' load inflates less than wall time. "shadow pass … draws" counts the shadow casters drawn by three's shadow pass (renderBufferDirect with its depth or distance material) during the capture, beside the draws of one render of the maps. With the maps drawn once, what shadows still cost is the receivers' shading (shadow coordinates per vertex, five PCF taps per fragment), which SwiftShader runs on the CPU.` );
+		notes.push( `Shadows (4): the Basic room of the demo (scenes/basic.ts, ${basic.triangles} triangles), its PointLight lamp casting shadows into a 512² cube map (three's default size; the walls cast and receive), probes on its 4 × 4 × 4 grid; "no shadows" = the same scene with renderer.shadowMap.enabled and the lamp's castShadow false. Inside the closed room nothing stands between the lamp and the walls, so the SH do not change (Check column); the figure is what shadows cost a capture. ProbeCapturer draws the shadow maps at the first cube face of a capture and restores shadowMap.autoUpdate / needsUpdate after; the "per cube face" row renders the same probes with CubeCamera.update and three's default autoUpdate = true, as captures did before, then the same GPU projection. Captures with and without shadows alternate (order swapped every run) after a warm-up capture of each; figure = median over runs; "paired" = median of the per-run ratios; "browser CPU" = median CPU seconds of the Chromium process tree (and the bench process) per capture, which other processes' load inflates less than wall time. "shadow pass … draws" counts the shadow casters drawn by three's shadow pass (renderBufferDirect with its depth or distance material) during the capture, beside the draws of one render of the maps. With the maps drawn once, what shadows still cost is the receivers' shading (shadow coordinates per vertex, five PCF taps per fragment), which SwiftShader runs on the CPU. "floor" = the same faces rendered by the page's copy of the capture loop with the shadow maps drawn (and waited for) before the timer and never redrawn: the shading with shadows alone, what no capture that draws these shadows can go below; "one render of the shadow maps" is the only part a capture could still skip (bench/captureShadowsDecompose.ts splits the rest by face size, map size, process and WebGL calls).` );
 
 		const sponzaFile = `${assetsFolder}/sponza/sponza.obj`;
 		if ( ! existsSync( sponzaFile ) ) {
@@ -102,7 +104,7 @@ interface Case { scene: string, size: number, runs: number, label: string }
 let browserPid: number | null = null;
 
 /** Runs a capture in the page; adds the CPU seconds of the browser (and this process) it took. */
-async function timed<K extends 'captureOnce' | 'capturePerFace'>(
+async function timed<K extends 'captureOnce' | 'capturePerFace' | 'captureLoop'>(
 	page: Page, name: K, ...args: Parameters<CaptureShadowsBenchApi[ K ]>
 ): Promise<Awaited<ReturnType<CaptureShadowsBenchApi[ K ]>> & { cpu: number }> {
 
@@ -113,47 +115,69 @@ async function timed<K extends 'captureOnce' | 'capturePerFace'>(
 
 }
 
-/** Ours with shadows vs ours without, alternating; rows for both. */
+/**
+ * Ours with shadows vs ours without vs the floor (the same faces shaded with maps drawn beforehand),
+ * alternating; rows for the three and for one render of the shadow maps.
+ */
 async function compare(
 	page: Page, rows: BenchRow[], log: ( message: string ) => void, { scene, size, runs, label }: Case,
 ): Promise<void> {
 
 	await call( page, 'captureOnce', scene, size, true );
 	await call( page, 'captureOnce', scene, size, false );
+	await call( page, 'captureLoop', scene, size, 'frozen' );
 	const perRender = await call( page, 'drawsPerShadowRender', scene );
-	const withTimes: number[] = [], withoutTimes: number[] = [], pairs: number[] = [], withCPU: number[] = [], withoutCPU: number[] = [];
-	let withSH: number[] = [], withoutSH: number[] = [], draws = 0;
+	const mapMs = await call( page, 'shadowMapRender', scene, 5 );
+	const variants = [ 'with', 'without', 'floor' ] as const;
+	const times = { with: [] as number[], without: [] as number[], floor: [] as number[] };
+	const cpu = { with: [] as number[], without: [] as number[], floor: [] as number[] };
+	const pairs: number[] = [];
+	let withSH: number[] = [], withoutSH: number[] = [], floorSH: number[] = [], draws = 0;
 	for ( let r = 0; r < runs; r ++ ) {
 
-		// Swap the order every run, so neither variant always runs second on a warmer machine.
-		const order = r % 2 === 0 ? [ true, false ] : [ false, true ];
-		const times: Record<string, number> = {};
-		for ( const shadows of order ) {
+		// Rotate the order every run, so no variant always runs after the same one on a warmer machine.
+		for ( let k = 0; k < variants.length; k ++ ) {
 
-			const result = await timed( page, 'captureOnce', scene, size, shadows );
-			times[ String( shadows ) ] = result.ms;
-			( shadows ? withCPU : withoutCPU ).push( result.cpu );
-			if ( shadows ) { withSH = result.sh; draws = result.shadowDraws; } else withoutSH = result.sh;
+			const variant = variants[ ( k + r ) % variants.length ];
+			const result = variant === 'floor'
+				? await timed( page, 'captureLoop', scene, size, 'frozen' )
+				: await timed( page, 'captureOnce', scene, size, variant === 'with' );
+			times[ variant ].push( result.ms );
+			cpu[ variant ].push( result.cpu );
+			if ( variant === 'with' ) { withSH = result.sh; draws = result.shadowDraws; } else if ( variant === 'without' ) withoutSH = result.sh;
+			else floorSH = result.sh;
 
 		}
 
-		withTimes.push( times.true ); withoutTimes.push( times.false ); pairs.push( times.true / times.false );
-		log( `shadows: ${scene} ${size}²: with ${times.true.toFixed( 0 )} ms, without ${times.false.toFixed( 0 )} ms` );
+		pairs.push( times.with[ r ] / times.without[ r ] );
+		log( `shadows: ${scene} ${size}²: with ${times.with[ r ].toFixed( 0 )} ms, without ${times.without[ r ].toFixed( 0 )} ms, `
+			+ `floor ${times.floor[ r ].toFixed( 0 )} ms` );
 
 	}
 
-	const withShadows = summarize( withTimes ), without = summarize( withoutTimes );
+	const withShadows = summarize( times.with ), without = summarize( times.without ), floor = summarize( times.floor );
 	const ratio = withShadows.median / without.median;
 	const change = l00Change( withSH, withoutSH );
 	const targets: Target[] = [ { text: `≤ ${GOAL}× without shadows`, met: ratio <= GOAL } ];
-	const cpuRatio = summarize( withCPU ).median / summarize( withoutCPU ).median;
+	const cpuOf = ( variant: keyof typeof cpu ) => summarize( cpu[ variant ] ).median;
 	rows.push( row( label, 'ours: ProbeCapturer.capture, shadows (maps drawn once per capture)', withShadows, {
 		peer: 'no shadows', ratio, targets,
-		output: `paired ${summarize( pairs ).median.toFixed( 2 )}×; browser CPU ${summarize( withCPU ).median.toFixed( 2 )} s, ${cpuRatio.toFixed( 2 )}×`,
+		ratios: [ { peer: 'floor', ratio: withShadows.median / floor.median } ],
+		output: `paired ${summarize( pairs ).median.toFixed( 2 )}×; browser CPU ${cpuOf( 'with' ).toFixed( 2 )} s, ${( cpuOf( 'with' ) / cpuOf( 'without' ) ).toFixed( 2 )}×`,
 		status: `shadow pass ${draws} draws per capture (one map render: ${perRender}); shadows change L00 by `
 			+ `${( 100 * change.mean ).toFixed( 2 )} % on average, ${( 100 * change.max ).toFixed( 1 )} % at most`,
 	} ) );
-	rows.push( row( label, 'ours: the same scene without shadows', without, { output: `browser CPU ${summarize( withoutCPU ).median.toFixed( 2 )} s` } ) );
+	rows.push( row( label, 'ours: the same scene without shadows', without, { output: `browser CPU ${cpuOf( 'without' ).toFixed( 2 )} s` } ) );
+	rows.push( row( label, 'floor: the same faces, shadow maps drawn beforehand and kept (no map render, no yields)', floor, {
+		peer: 'no shadows', ratio: floor.median / without.median,
+		output: `browser CPU ${cpuOf( 'floor' ).toFixed( 2 )} s, ${( cpuOf( 'floor' ) / cpuOf( 'without' ) ).toFixed( 2 )}× without`,
+		status: `same SH as ours: max Δ ${maxDifference( floorSH, withSH ).toExponential( 1 )} of L00`,
+	} ) );
+	rows.push( {
+		case: label, subject: 'diagnostic: one render of the shadow maps (one-texel renders with the maps redrawn minus without)',
+		unit: 'ms', median: mapMs, min: null, max: null, runs: 5,
+		output: `without shadows + one map render = ${( ( without.median + mapMs ) / without.median ).toFixed( 2 )}× without`,
+	} );
 
 }
 

@@ -6,7 +6,9 @@
  * Scenes: the Basic room of the demo (scenes/basic.ts; its lamp casting shadows, the walls casting
  * and receiving them) with its 4 × 4 × 4 grid of probes, and Sponza (scenes/sponza.ts: the sun's
  * 2048² shadow map, the sky dome and the ambient stand-in of the demo page) with its 85 probes.
- * Every capture ends in the read-back of the SH, so the times include the GPU work.
+ * Every capture ends in the read-back of the SH, so the times include the GPU work. The diagnostics
+ * (`captureLoop`, `shadowMapRender`, `setMapSize`, `countGL`, `sceneStats`) serve the floor rows and
+ * bench/captureShadowsDecompose.ts.
  */
 
 import * as THREE from 'three';
@@ -211,6 +213,193 @@ function drawsPerShadowRender( name: string ): number {
 
 }
 
+// Diagnostics of the "shadows" part (bench/captureShadowsDecompose.ts): where the extra time of a
+// capture with shadows goes. Same loop as ProbeCapturer.capture (no yields), three variants.
+
+/** A 1-pixel read of the canvas: returns once every GL command issued before it has run. */
+function finishGL(): void {
+
+	renderer.setRenderTarget( null );
+	gl.readPixels( 0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array( 4 ) );
+
+}
+
+/**
+ * Diagnostic capture of the first `probes` probes: `'none'` without shadows; `'once'` with the maps
+ * drawn at the first face (what ProbeCapturer does); `'frozen'` with the maps drawn and waited for
+ * before the timer starts and never redrawn, so the time is the faces' shading alone.
+ */
+function captureLoop(
+	name: string, resolution: number, mode: 'none' | 'once' | 'frozen', probes = - 1,
+): { ms: number, sh: number[], shadowDraws: number } {
+
+	const entry = sceneNamed( name );
+	const positions = probes < 0 ? entry.positions : entry.positions.subarray( 0, 3 * probes );
+	const count = positions.length / 3;
+	setShadows( entry, mode !== 'none' );
+	const { cubeCamera, cubeRenderTarget, projector } = capturerFor( resolution );
+	entry.scene.updateMatrixWorld();
+	if ( mode !== 'none' ) {
+
+		renderer.shadowMap.autoUpdate = false;
+		renderer.shadowMap.needsUpdate = true;
+		if ( mode === 'frozen' ) {
+
+			renderTiny( entry, cubeCamera.children[ 0 ] as THREE.Camera );
+			finishGL();
+
+		}
+
+	}
+
+	const sh = new Float32Array( 27 * count );
+	const batch = SHProjector.batchCapacity( resolution );
+	const draws = shadowDraws;
+	const start = performance.now();
+	for ( let first = 0; first < count; first += batch ) {
+
+		const size = Math.min( batch, count - first );
+		projector.begin( 'cube', resolution, size );
+		for ( let i = first; i < first + size; i ++ ) {
+
+			cubeCamera.position.fromArray( positions, 3 * i );
+			cubeCamera.updateMatrixWorld();
+			renderer.autoClear = true;
+			cubeCamera.update( renderer, entry.scene );
+			projector.add( cubeRenderTarget.texture );
+
+		}
+
+		projector.finish( sh, 27 * first );
+
+	}
+
+	const ms = performance.now() - start;
+	renderer.shadowMap.autoUpdate = true;
+	return { ms, sh: Array.from( sh ), shadowDraws: shadowDraws - draws };
+
+}
+
+// three's shadow pass draws through renderer.renderBufferDirect, which needs a render under way:
+// the maps are drawn by a render of the scene into one texel.
+const tinyTarget = new THREE.WebGLRenderTarget( 1, 1 );
+
+/** Renders the scene into one texel: draws the shadow maps when they need it, and little else. */
+function renderTiny( entry: ShadowScene, camera: THREE.Camera ): void {
+
+	renderer.setRenderTarget( tinyTarget );
+	renderer.render( entry.scene, camera );
+	renderer.setRenderTarget( null );
+
+}
+
+/**
+ * Diagnostic: ms per render of the scene's shadow maps — `reps` one-texel renders that redraw the
+ * maps minus as many that do not, each set waited for.
+ */
+function shadowMapRender( name: string, reps: number ): number {
+
+	const entry = sceneNamed( name );
+	setShadows( entry, true );
+	renderer.shadowMap.autoUpdate = false;
+	const camera = new THREE.PerspectiveCamera();
+	camera.position.fromArray( entry.positions, 0 );
+	entry.scene.updateMatrixWorld();
+	const time = ( redraw: boolean ) => {
+
+		finishGL();
+		const start = performance.now();
+		for ( let r = 0; r < reps; r ++ ) {
+
+			renderer.shadowMap.needsUpdate = redraw;
+			renderTiny( entry, camera );
+
+		}
+
+		finishGL();
+		return performance.now() - start;
+
+	};
+
+	time( true ); // warm-up
+	const ms = ( time( true ) - time( false ) ) / reps;
+	renderer.shadowMap.autoUpdate = true;
+	return ms;
+
+}
+
+/** Diagnostic: sets the shadow map size of the scene's casters (the maps are made again at the next render). */
+function setMapSize( name: string, size: number ): number[] {
+
+	const casters = sceneNamed( name ).casters as ( THREE.Light & { shadow: THREE.LightShadow } )[];
+	for ( const light of casters ) {
+
+		light.shadow.mapSize.set( size, size );
+		light.shadow.map?.dispose();
+		light.shadow.map = null;
+
+	}
+
+	return casters.map( ( light ) => light.shadow.mapSize.x );
+
+}
+
+/** Diagnostic: the WebGL calls (by name) of one {@link captureLoop}, counted by wrapping the context's methods. */
+function countGL( name: string, resolution: number, mode: 'none' | 'once' | 'frozen', probes = - 1 ): Record<string, number> {
+
+	const counts: Record<string, number> = {};
+	const context = gl as unknown as Record<string, unknown>;
+	const wrapped: string[] = [];
+	for ( const key of Object.getOwnPropertyNames( WebGL2RenderingContext.prototype ) ) {
+
+		const original = context[ key ];
+		if ( typeof original !== 'function' || key === 'constructor' ) continue;
+		context[ key ] = function ( this: unknown, ...args: unknown[] ) {
+
+			counts[ key ] = ( counts[ key ] ?? 0 ) + 1;
+			return ( original as ( ...a: unknown[] ) => unknown ).apply( gl, args );
+
+		};
+
+		wrapped.push( key );
+
+	}
+
+	try {
+
+		captureLoop( name, resolution, mode, probes );
+
+	} finally {
+
+		for ( const key of wrapped ) delete context[ key ];
+
+	}
+
+	return counts;
+
+}
+
+/** Diagnostic: draws per render of one cube capture (6 faces) and the receivers/casters of the scene. */
+function sceneStats( name: string ): Record<string, number> {
+
+	const entry = sceneNamed( name );
+	let meshes = 0, receivers = 0, casters = 0, vertices = 0;
+	const materials = new Set<THREE.Material>();
+	entry.scene.traverse( ( object ) => {
+
+		const mesh = object as THREE.Mesh;
+		if ( ! mesh.isMesh ) return;
+		meshes ++;
+		if ( mesh.receiveShadow ) receivers ++;
+		if ( mesh.castShadow ) casters ++;
+		vertices += mesh.geometry.getAttribute( 'position' ).count;
+		for ( const material of Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ] ) materials.add( material );
+
+	} );
+	return { meshes, receivers, casters, vertices, materials: materials.size };
+
+}
+
 function info(): Record<string, unknown> {
 
 	const debug = gl.getExtension( 'WEBGL_debug_renderer_info' );
@@ -221,7 +410,10 @@ function info(): Record<string, unknown> {
 
 }
 
-const api = { info, loadBasic, loadSponza, captureOnce, capturePerFace, drawsPerShadowRender };
+const api = {
+	info, loadBasic, loadSponza, captureOnce, capturePerFace, drawsPerShadowRender,
+	captureLoop, shadowMapRender, setMapSize, countGL, sceneStats,
+};
 Object.assign( window, { captureShadowsBench: api } );
 export type CaptureShadowsBenchApi = typeof api;
 
