@@ -33,7 +33,7 @@ const mdcs = {
 };
 
 export default [
-	{ ignores: [ 'dist/**', 'node_modules/**', 'src/shaders.generated.ts', 'test/output/**', 'bench/results/**', 'experiment/results/**' ] },
+	{ ignores: [ 'dist/**', 'node_modules/**', 'src/shaders.generated.ts', 'test/output/**', 'bench/results/**', 'bench/build/**', 'experiment/results/**' ] },
 	{
 		files: [ '**/*.ts', '**/*.js', '**/*.mjs' ],
 		languageOptions: { parser: tseslint.parser, ecmaVersion: 2022, sourceType: 'module' },
