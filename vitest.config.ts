@@ -1,6 +1,13 @@
+import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
+import { libraryAliases } from './cli/libraryAliases.js';
+
+const root = fileURLToPath( new URL( '.', import.meta.url ) );
 
 export default defineConfig( {
+	// `three-capture-lighting` and its subpaths resolve to src/, as in the demo pages (scenes/*.ts
+	// import them): a fresh clone has no dist/ for the package's self-reference to find.
+	resolve: { alias: libraryAliases( root ) },
 	test: {
 		include: [ 'test/**/*.test.ts' ],
 		testTimeout: 300_000,
