@@ -287,15 +287,21 @@ describe.skipIf( browserSkipReason !== '' )( `demo pages in Chromium${browserSki
 
 	it( 'basic: the progress bar counts the probes captured, pass by pass with bounces, with the time left, at the first capture and at a recapture', async () => {
 
-		// Every text the progress label shows, recorded as the page changes it (the capture yields
-		// to the page about every 30 ms, so several labels of each pass are seen).
+		// Every text the progress label is given, in order: each `textContent =` replaces the label's
+		// text node, and the records keep every node added, so a label that was replaced before the
+		// observer ran (a pass faster than one yield to the page) is still seen.
 		const page = await session.browser.newPage();
 		await page.setViewport( SIZE );
 		await page.evaluateOnNewDocument( `window.__labels = [];
-			new MutationObserver( () => {
-				const text = document.getElementById( 'progress-label' )?.textContent ?? '';
-				if ( text !== '' && text !== window.__labels[ window.__labels.length - 1 ] ) window.__labels.push( text );
-			} ).observe( document, { subtree: true, childList: true, characterData: true } );` );
+			new MutationObserver( ( records ) => {
+				for ( const record of records ) {
+					if ( record.target.id !== 'progress-label' ) continue;
+					for ( const node of record.addedNodes ) {
+						const text = node.textContent ?? '';
+						if ( text !== '' && text !== window.__labels[ window.__labels.length - 1 ] ) window.__labels.push( text );
+					}
+				}
+			} ).observe( document, { subtree: true, childList: true } );` );
 		await page.goto( `${session.baseUrl}examples/basic.html?${FIXED}&t=4&bounces=1`, { waitUntil: 'load' } );
 		await page.waitForFunction( 'window.__demo?.ready || window.__demo?.error', { timeout: 180_000 } );
 		const first = await page.evaluate( 'window.__labels.splice( 0 )' ) as string[];
