@@ -4,6 +4,7 @@ import {
 import { GridInterpolator } from '../interpolation/GridInterpolator.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { describeValue } from '../validate.js';
+import { anchorInWorld } from './anchorInWorld.js';
 import { hideLinesFromCubeCameras } from './cubeCameraHiding.js';
 import type { LightProbeVolume, ProbePosition } from './LightProbeVolume.js';
 import { GRID_BOX_EDGES } from './probeCellEdges.js';
@@ -15,6 +16,8 @@ const MAX_EDGES = 12;
 
 /** Slot pairs of the complete graph on 4 slots: a tetrahedron's edges (a triangle's and a segment's come first). */
 const SIMPLEX_EDGES = [ 0, 1, 1, 2, 2, 0, 0, 3, 1, 3, 2, 3 ];
+
+const _world = new Float64Array( 3 );
 
 /** What a highlight follows: an object, a position, or nothing. */
 export type HighlightTarget = Object3D | ProbePosition | null;
@@ -131,10 +134,8 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 		} else if ( ( target as Object3D ).isObject3D === true ) {
 
 			// The object's matrixWorld as the volume's update() left it (it updates it before sampling).
-			const e = ( target as Object3D ).matrixWorld.elements, a = this.anchor;
-			x = e[ 0 ] * a[ 0 ] + e[ 4 ] * a[ 1 ] + e[ 8 ] * a[ 2 ] + e[ 12 ];
-			y = e[ 1 ] * a[ 0 ] + e[ 5 ] * a[ 1 ] + e[ 9 ] * a[ 2 ] + e[ 13 ];
-			z = e[ 2 ] * a[ 0 ] + e[ 6 ] * a[ 1 ] + e[ 10 ] * a[ 2 ] + e[ 14 ];
+			const world = anchorInWorld( target as Object3D, this.anchor, _world );
+			x = world[ 0 ]; y = world[ 1 ]; z = world[ 2 ];
 
 		} else {
 

@@ -2,6 +2,7 @@ import { Box3, Matrix4, Vector3, type Material, type Mesh, type Object3D, type S
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertNumber, assertOptionalBoolean, describeValue, firstBeyond } from '../validate.js';
+import { anchorInWorld } from './anchorInWorld.js';
 import { describeObject, meshWorldBox } from './chooseLighting.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import { MeshTextureLighting } from './MeshTextureLighting.js';
@@ -80,6 +81,7 @@ export interface LitObject extends VisibilityCache {
 }
 
 let _warnedInstancing = false;
+const _world = new Float64Array( 3 );
 
 // Local copies: read in update()'s per-object loop (an imported binding can cost a getter call each time).
 const BLEND_FLOATS = SH_FLOATS;
@@ -161,12 +163,9 @@ export function updateLitObject(
 
 	}
 
-	const object = entry.object;
-	object.updateWorldMatrix( true, false );
-	const e = object.matrixWorld.elements, a = entry.anchor;
-	const x = e[ 0 ] * a[ 0 ] + e[ 4 ] * a[ 1 ] + e[ 8 ] * a[ 2 ] + e[ 12 ];
-	const y = e[ 1 ] * a[ 0 ] + e[ 5 ] * a[ 1 ] + e[ 9 ] * a[ 2 ] + e[ 13 ];
-	const z = e[ 2 ] * a[ 0 ] + e[ 6 ] * a[ 1 ] + e[ 10 ] * a[ 2 ] + e[ 14 ];
+	entry.object.updateWorldMatrix( true, false );
+	const world = anchorInWorld( entry.object, entry.anchor, _world );
+	const x = world[ 0 ], y = world[ 1 ], z = world[ 2 ];
 	let zone = entry.fixedZone;
 	if ( zone < 0 && zones !== null ) zone = zones.zoneAt( x, y, z );
 	if ( zone !== entry.zone ) {

@@ -1,6 +1,7 @@
 import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { SH_FLOATS } from '../validate.js';
+import { anchorInWorld } from './anchorInWorld.js';
 import type { LitObject } from './litObjects.js';
 import type { ProbeField } from './ProbeField.js';
 import { MAX_WEIGHTS } from './ProbeWeighting.js';
@@ -15,6 +16,7 @@ import { MAX_WEIGHTS } from './ProbeWeighting.js';
 const _indices = new Uint32Array( MAX_WEIGHTS );
 const _weights = new Float32Array( MAX_WEIGHTS );
 const _sh = new Float32Array( SH_FLOATS );
+const _world = new Float64Array( 3 );
 
 /** Switches the probe light of the scenery entries of `lit` off; returns what switches it back on. */
 export function switchOffScenery( lit: readonly LitObject[] ): () => void {
@@ -97,14 +99,10 @@ export function lightScenery( lit: readonly LitObject[], field: ProbeField ): ()
 /** The irradiance matrices of `field` blended at an entry's anchor (world position of its local anchor). */
 function blendAtAnchor( entry: LitObject, field: ProbeField, matrices: Float32Array ): void {
 
-	const object = entry.object;
-	object.updateWorldMatrix( true, false );
-	const e = object.matrixWorld.elements, a = entry.anchor;
-	const x = e[ 0 ] * a[ 0 ] + e[ 4 ] * a[ 1 ] + e[ 8 ] * a[ 2 ] + e[ 12 ];
-	const y = e[ 1 ] * a[ 0 ] + e[ 5 ] * a[ 1 ] + e[ 9 ] * a[ 2 ] + e[ 13 ];
-	const z = e[ 2 ] * a[ 0 ] + e[ 6 ] * a[ 1 ] + e[ 10 ] * a[ 2 ] + e[ 14 ];
+	entry.object.updateWorldMatrix( true, false );
+	const world = anchorInWorld( entry.object, entry.anchor, _world );
 	const interpolator = field.interpolator;
-	interpolator.interpolate( x, y, z, _indices, _weights, - 1 );
+	interpolator.interpolate( world[ 0 ], world[ 1 ], world[ 2 ], _indices, _weights, - 1 );
 	irradianceMatrices( blendSH( _indices, _weights, field.sh, _sh, interpolator.weightCount ), matrices );
 
 }
