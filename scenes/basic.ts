@@ -5,15 +5,16 @@ import type { ProbeLayout } from './layout.js';
 
 /**
  * The paper's Basic scene: a 4 × 3 × 4 room with a red (−x), a green (+x) and a blue (−z) wall,
- * grey floor, ceiling and front wall, lit by one warm lamp hanging in the middle.
+ * grey floor, ceiling and front wall, lit by one warm lamp hanging in the middle. `segments`
+ * subdivides each side of the box (tests of vertex-based placement want more than its corners).
  */
-export function createBasicRoom(): { room: THREE.Group; lamp: THREE.PointLight } {
+export function createBasicRoom( segments = 1 ): { room: THREE.Group; lamp: THREE.PointLight } {
 
 	const wall = ( color: number ) => new THREE.MeshStandardMaterial( { color, roughness: 0.9, side: THREE.BackSide } );
 	// BoxGeometry groups: +x, −x, +y, −y, +z, −z.
 	// Grey floor and ceiling, so the coloured walls dominate the bounce light, as in the paper's figures.
 	const box = new THREE.Mesh(
-		new THREE.BoxGeometry( 4, 3, 4 ),
+		new THREE.BoxGeometry( 4, 3, 4, segments, segments, segments ),
 		[ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xaaaaaa ), wall( 0x888888 ), wall( 0xcccccc ), wall( 0x2040e0 ) ]
 	);
 	box.position.y = 1.5;

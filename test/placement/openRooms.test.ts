@@ -12,7 +12,8 @@ import { gatherWorldGeometry } from '../../src/geometry/gatherWorldGeometry.js';
 import { TriangleBVH } from '../../src/geometry/TriangleBVH.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance } from './helpers.js';
-import { basicRoom, blockMesh, cornellBox, insideBlock, parityVote, twoRoomLevel, type Block } from './openScenes.js';
+import { blockMesh, cornellBox, insideBlock, parityVote, twoRoomLevel, type Block } from './openScenes.js';
+import { createBasicRoom } from '../../scenes/basic.js';
 
 /** The scene's BVH and drawn sides, as placeFromMeshes reads them. */
 function sceneOf( root: THREE.Object3D ): { bvh: TriangleBVH; sides: Int8Array } {
@@ -141,7 +142,7 @@ describe( 'the inside test on rooms drawn from inside (BackSide)', () => {
 
 	it( 'the Basic room of scenes/basic.ts: all 64 points of its 4 × 4 × 4 grid are open space; ray parity kept 0 (a closed box: every ray crosses it once)', () => {
 
-		const { room } = basicRoom();
+		const { room } = createBasicRoom();
 		const { bvh, sides } = sceneOf( room );
 		const grid = placeGrid( [ - 1.8, 0.2, - 1.8 ], [ 1.8, 2.8, 1.8 ], [ 4, 4, 4 ] ); // scenes/basic.ts basicGrid
 		expect( count( classifyPoints( grid, bvh, { sides } ), OPEN_SPACE ) ).toBe( 64 );
@@ -154,7 +155,7 @@ describe( 'the inside test on rooms drawn from inside (BackSide)', () => {
 		// Unsubdivided, as in scenes/basic.ts, every corner vertex moved along one wall's normal lies
 		// on the two other walls at that corner (rejected as near a surface): only the bulb's
 		// vertices give candidates. That is why `placeProbes` adds grid candidates.
-		const bare = placeFromMeshes( basicRoom().room, { offset: 0.3, minSpacing: 0.25 } );
+		const bare = placeFromMeshes( createBasicRoom().room, { offset: 0.3, minSpacing: 0.25 } );
 		for ( let i = 0; i < bare.length; i += 3 ) {
 
 			expect( Math.hypot( bare[ i ] - 0.2, bare[ i + 1 ] - 2.1, bare[ i + 2 ] - 0.3 ) ).toBeCloseTo( 0.38, 1 );
@@ -165,7 +166,7 @@ describe( 'the inside test on rooms drawn from inside (BackSide)', () => {
 
 		// BoxGeometry's normals point out of the box; BackSide draws the inside. 8 × 6 × 8 segments:
 		// the face vertices away from the edges land 0.3 inside the room, clear of the other walls.
-		const { room } = basicRoom( 8 );
+		const { room } = createBasicRoom( 8 );
 		const kept = placeFromMeshes( room, { offset: 0.3, minSpacing: 0.25 } );
 		expect( kept.length / 3 ).toBeGreaterThan( 150 );
 		for ( let i = 0; i < kept.length; i += 3 ) {
@@ -179,7 +180,7 @@ describe( 'the inside test on rooms drawn from inside (BackSide)', () => {
 
 	it( 'a room with a closed box prop: grid and vertex candidates inside the prop are rejected, all others kept', () => {
 
-		const { room } = basicRoom( 8 );
+		const { room } = createBasicRoom( 8 );
 		const prop: Block = { centre: [ 0.5, 0.5, - 0.5 ], half: [ 0.5, 0.5, 0.5 ], angle: 0.4 };
 		room.add( blockMesh( prop, new THREE.MeshStandardMaterial() ) );
 		const { bvh, sides } = sceneOf( room );

@@ -100,31 +100,6 @@ export function parityVote( points: ArrayLike<number>, bvh: TriangleBVH ): boole
 }
 
 /**
- * The Basic room of scenes/basic.ts, built the same way (scenes/basic.ts itself imports the
- * package's /math entry, which Vitest resolves only after a build): a 4 × 3 × 4 box drawn from
- * inside (`BackSide`), x, z ∈ [−2, 2], y ∈ [0, 3], coloured walls, a warm point lamp at
- * (0.2, 2.1, 0.3) and its bulb, a closed sphere of radius 0.08. `segments` subdivides the box.
- */
-export function basicRoom( segments = 1 ): { room: THREE.Group; lamp: THREE.PointLight; bulb: THREE.Mesh } {
-
-	const wall = ( color: number ) => new THREE.MeshStandardMaterial( { color, roughness: 0.9, side: THREE.BackSide } );
-	const box = new THREE.Mesh(
-		new THREE.BoxGeometry( 4, 3, 4, segments, segments, segments ),
-		[ wall( 0x30c030 ), wall( 0xd02020 ), wall( 0xaaaaaa ), wall( 0x888888 ), wall( 0xcccccc ), wall( 0x2040e0 ) ]
-	);
-	box.position.y = 1.5;
-	box.name = 'room';
-	const lamp = new THREE.PointLight( 0xfff2e0, 12, 0, 2 );
-	lamp.position.set( 0.2, 2.1, 0.3 );
-	const bulb = new THREE.Mesh( new THREE.SphereGeometry( 0.08 ), new THREE.MeshBasicMaterial( { color: 0xfff2e0 } ) );
-	bulb.position.copy( lamp.position );
-	const room = new THREE.Group();
-	room.add( box, lamp, bulb );
-	return { room, lamp, bulb };
-
-}
-
-/**
  * Two 4 × 3 × 4 rooms side by side, x ∈ [−4, 0] (A) and [0, 4] (B), y ∈ [0, 3], z ∈ [−2, 2], built
  * from open single-sided quads facing into the rooms (floor, ceiling, outer walls), split by a
  * double-sided wall at x = 0 with a doorway z ∈ [−0.5, 0.5], y ∈ [0, 2] — left open, or closed by a

@@ -17,7 +17,8 @@ import { reduceProbes } from '../../src/placement/reduceProbes.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance } from '../placement/helpers.js';
-import { basicRoom, cornellBox, insideBlock } from '../placement/openScenes.js';
+import { cornellBox, insideBlock } from '../placement/openScenes.js';
+import { createBasicRoom } from '../../scenes/basic.js';
 
 const ctx = await createHeadlessRenderer( 32, 32 );
 const SKIPPED = ctx.renderer ? '' : ` — SKIPPED: ${ctx.skipReason}`;
@@ -75,7 +76,7 @@ describe.skipIf( ! ctx.renderer )( `placeProbes: the placement recipe on headles
 	describe( 'the Basic room (scenes/basic.ts), 32 probes', () => {
 
 		const scene = new THREE.Scene();
-		scene.add( basicRoom().room );
+		scene.add( createBasicRoom().room );
 		const spawn = [ 0, 1.6, 0 ];
 		let placed: PlaceProbesResult;
 		let volume: LightProbeVolume;
@@ -178,7 +179,7 @@ describe.skipIf( ! ctx.renderer )( `placeProbes: the placement recipe on headles
 
 	it( 'the step-by-step recipe of docs/placement.md, as written there, on a tessellated Basic room: 32 probes in the room', async () => {
 
-		const { room: level } = basicRoom( 8 );
+		const { room: level } = createBasicRoom( 8 );
 		const scene = new THREE.Scene().add( level );
 		const spawn = new THREE.Vector3( 0, 1.6, 0 );
 		// --- docs/placement.md, "Step by step" ---

@@ -5,14 +5,15 @@
 import { describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import { placeProbes } from '../../src/runtime/placeProbes.js';
-import { basicRoom, cornellBox } from '../placement/openScenes.js';
+import { cornellBox } from '../placement/openScenes.js';
+import { createBasicRoom } from '../../scenes/basic.js';
 
 const renderer = { isWebGLRenderer: true, getContext() {} } as unknown as THREE.WebGLRenderer;
 
 describe( 'placeProbes (checks before the capture)', () => {
 
 	const scene = new THREE.Scene();
-	scene.add( basicRoom().room );
+	scene.add( createBasicRoom().room );
 
 	it( 'names placeProbes and the bad argument', async () => {
 
