@@ -8,6 +8,7 @@ import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader
 import { TetrahedralMesh } from '../../src/interpolation/TetrahedralMesh.js';
 import { BakedVolumeError, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume } from '../../src/io/index.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
+import { randomVolume as createRandomVolume } from '../helpers/randomVolume.js';
 import { installGLTFNodeStubs } from '../io/gltfNodeStubs.js';
 
 /*
@@ -20,23 +21,7 @@ import { installGLTFNodeStubs } from '../io/gltfNodeStubs.js';
 // Node 20 has fetch but no ProgressEvent, which three's FileLoader creates per chunk (without it a load never ends).
 installGLTFNodeStubs();
 
-function randomVolume( count: number, seed: number ): LightProbeVolume {
-
-	const random = mulberry32( seed );
-	const positions = Array.from( { length: 3 * count }, () => 10 * random() );
-	const sh = Array.from( { length: 27 * count }, () => random() - 0.3 );
-	const names = Array.from( { length: count }, ( _, i ) => `probe ${i}` );
-	const roles = Array.from( { length: count }, ( _, i ) => ( [ 'sky', 'bounce', 'bleed', 'fill' ] as const )[ i % 4 ] );
-	const zones = [
-		{ name: 'west', probes: Array.from( { length: count }, ( _, i ) => i ).filter( ( i ) => positions[ 3 * i ] < 6 ), bounds: { min: { x: 0, y: 0, z: 0 }, max: { x: 5, y: 10, z: 10 } } },
-		{ name: 'all', probes: Array.from( { length: count }, ( _, i ) => i ) },
-	];
-	const volume = new LightProbeVolume( { positions, sh, names, roles, zones } );
-	volume.captureSettings = { resolution: 64, near: 0.1, far: 500, type: 'half', solidAngle: 'exact', roles: { sky: { far: 5000 } } };
-	volume.metadata = 'loader test';
-	return volume;
-
-}
+const randomVolume = ( count: number, seed: number ): LightProbeVolume => createRandomVolume( count, seed, 'loader test' );
 
 /** The loaded volume holds the original's data and lights every point as it does, within `tolerance` (relative). */
 function expectSameVolume( loaded: LightProbeVolume, volume: LightProbeVolume, tolerance: number ): void {

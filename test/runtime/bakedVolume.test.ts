@@ -5,6 +5,7 @@ import { decodeBakedVolume } from '../../src/format.js';
 import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
 import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
+import { randomVolume as createRandomVolume } from '../helpers/randomVolume.js';
 
 /*
  * LightProbeVolume ↔ baked files through LightProbeVolumeExporter / LightProbeVolumeLoader (the
@@ -15,23 +16,7 @@ import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 const loader = new LightProbeVolumeLoader();
 const exporter = new LightProbeVolumeExporter();
 
-function randomVolume( count: number, seed: number ): LightProbeVolume {
-
-	const random = mulberry32( seed );
-	const positions = Array.from( { length: 3 * count }, () => 10 * random() );
-	const sh = Array.from( { length: 27 * count }, () => random() - 0.3 );
-	const names = Array.from( { length: count }, ( _, i ) => `probe ${i}` );
-	const roles = Array.from( { length: count }, ( _, i ) => ( [ 'sky', 'bounce', 'bleed', 'fill' ] as const )[ i % 4 ] );
-	const zones = [
-		{ name: 'west', probes: Array.from( { length: count }, ( _, i ) => i ).filter( ( i ) => positions[ 3 * i ] < 6 ), bounds: { min: { x: 0, y: 0, z: 0 }, max: { x: 5, y: 10, z: 10 } } },
-		{ name: 'all', probes: Array.from( { length: count }, ( _, i ) => i ) },
-	];
-	const volume = new LightProbeVolume( { positions, sh, names, roles, zones } );
-	volume.captureSettings = { resolution: 64, near: 0.1, far: 500, type: 'half', solidAngle: 'exact', roles: { sky: { far: 5000 } } };
-	volume.metadata = 'test bake';
-	return volume;
-
-}
+const randomVolume = ( count: number, seed: number ): LightProbeVolume => createRandomVolume( count, seed, 'test bake' );
 
 function samplesEqual( a: LightProbeVolume, b: LightProbeVolume, tolerance: number ): void {
 
