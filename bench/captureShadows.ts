@@ -225,7 +225,7 @@ function l00Change( a: number[], b: number[] ): { mean: number, max: number } {
 }
 
 /** Largest |a − b| over all floats, relative to that probe's largest |L00| channel of `b`. */
-function maxDifference( a: number[], b: number[] ): number {
+export function maxDifference( a: number[], b: number[] ): number {
 
 	let worst = 0;
 	for ( let p = 0; p < b.length / 27; p ++ ) {

@@ -15,6 +15,7 @@ import { fileURLToPath } from 'node:url';
 import { launchChromium } from '../cli/chromium.js';
 import { libraryAliases } from '../cli/libraryAliases.js';
 import { assetsPlugin } from '../scripts/assetsPlugin.mjs';
+import { maxDifference } from './captureShadows.js';
 import type { CaptureShadowsBenchApi } from './pages/captureShadows.js';
 
 type Page = import( 'puppeteer-core' ).Page;
@@ -82,21 +83,6 @@ function median( values: number[] ): number {
 	const sorted = [ ...values ].sort( ( a, b ) => a - b );
 	const mid = sorted.length >> 1;
 	return sorted.length % 2 ? sorted[ mid ] : ( sorted[ mid - 1 ] + sorted[ mid ] ) / 2;
-
-}
-
-/** Largest |a − b| relative to the probe's largest L00 channel of `b`. */
-function maxDifference( a: number[], b: number[] ): number {
-
-	let worst = 0;
-	for ( let p = 0; p < b.length / 27; p ++ ) {
-
-		const scale = Math.max( Math.abs( b[ 27 * p ] ), Math.abs( b[ 27 * p + 1 ] ), Math.abs( b[ 27 * p + 2 ] ), 1e-12 );
-		for ( let i = 0; i < 27; i ++ ) worst = Math.max( worst, Math.abs( a[ 27 * p + i ] - b[ 27 * p + i ] ) / scale );
-
-	}
-
-	return worst;
 
 }
 
