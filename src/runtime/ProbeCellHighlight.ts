@@ -1,10 +1,9 @@
-import {
-	Box3, BufferAttribute, BufferGeometry, LineBasicMaterial, LineSegments, Matrix4, Vector3, type Object3D, type SkinnedMesh,
-} from 'three';
+import { BufferAttribute, BufferGeometry, LineBasicMaterial, LineSegments, Vector3, type Object3D } from 'three';
 import { GridInterpolator } from '../interpolation/GridInterpolator.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { describeValue } from '../validate.js';
 import { anchorInWorld } from './anchorInWorld.js';
+import { localBoundsCentre } from './litObjects.js';
 import { hideLinesFromCubeCameras } from './cubeCameraHiding.js';
 import type { LightProbeVolume, ProbePosition } from './LightProbeVolume.js';
 import { GRID_BOX_EDGES } from './probeCellEdges.js';
@@ -75,7 +74,7 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 			// Where the volume samples it (its anchor) when registered, else its bounding-box centre as add() would.
 			const anchor = this.volume.getAnchor( target as Object3D, new Vector3() );
 			if ( anchor !== null ) anchor.toArray( this.anchor );
-			else objectAnchor( target as Object3D, this.anchor );
+			else this.anchor.set( localBoundsCentre( target as Object3D, undefined, true ) );
 
 		} else if ( target !== null ) {
 
@@ -231,20 +230,5 @@ export class ProbeCellHighlight extends LineSegments<BufferGeometry, LineBasicMa
 		attribute.needsUpdate = true;
 
 	}
-
-}
-
-/**
- * The centre of an object's world bounding box in its own frame, as `LightProbeVolume.add()`
- * computes the point where an object samples the probes (a skinned mesh posed by its bones).
- */
-function objectAnchor( object: Object3D, out: Float64Array ): void {
-
-	object.updateWorldMatrix( true, true );
-	object.traverse( ( child ) => ( child as SkinnedMesh ).skeleton?.update() );
-	const box = new Box3().setFromObject( object );
-	if ( box.isEmpty() ) { out.fill( 0 ); return; }
-	const centre = box.getCenter( new Vector3() ).applyMatrix4( new Matrix4().copy( object.matrixWorld ).invert() );
-	out[ 0 ] = centre.x; out[ 1 ] = centre.y; out[ 2 ] = centre.z;
 
 }

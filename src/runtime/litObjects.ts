@@ -421,7 +421,9 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 }
 
 /** The centre of an object's bounding box (of the object alone when not `subtree`) in its own frame, or the given anchor. */
-function localBoundsCentre( object: Object3D, anchor: { x: number; y: number; z: number } | undefined, subtree: boolean ): Float64Array {
+export function localBoundsCentre(
+	object: Object3D, anchor: { x: number; y: number; z: number } | undefined, subtree: boolean,
+): Float64Array {
 
 	if ( anchor ) return Float64Array.of( anchor.x, anchor.y, anchor.z );
 	object.updateWorldMatrix( true, true );
