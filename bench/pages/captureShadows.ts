@@ -162,14 +162,28 @@ function capturePerFace( name: string, resolution: number, probes = - 1 ): { ms:
 
 	const entry = sceneNamed( name );
 	const positions = probes < 0 ? entry.positions : entry.positions.subarray( 0, 3 * probes );
-	const count = positions.length / 3;
 	setShadows( entry, true );
-	const { cubeCamera, cubeRenderTarget, projector } = capturerFor( resolution );
-	const sh = new Float32Array( 27 * count );
-	const batch = SHProjector.batchCapacity( resolution );
+	const capturer = capturerFor( resolution );
 	const draws = shadowDraws;
 	const start = performance.now();
 	entry.scene.updateMatrixWorld();
+	const sh = captureWithCubeCamera( entry, positions, resolution, capturer );
+	return { ms: performance.now() - start, sh: Array.from( sh ), shadowDraws: shadowDraws - draws };
+
+}
+
+/**
+ * CubeCamera.update at each probe, then the GPU projection and read-back in batches: the capture
+ * loop of the diagnostics, with whatever shadow-map settings the caller left on the renderer.
+ */
+function captureWithCubeCamera(
+	entry: ShadowScene, positions: Float32Array | Float64Array, resolution: number, capturer: ProbeCapturer,
+): Float32Array {
+
+	const { cubeCamera, cubeRenderTarget, projector } = capturer;
+	const count = positions.length / 3;
+	const sh = new Float32Array( 27 * count );
+	const batch = SHProjector.batchCapacity( resolution );
 	for ( let first = 0; first < count; first += batch ) {
 
 		const size = Math.min( batch, count - first );
@@ -188,7 +202,7 @@ function capturePerFace( name: string, resolution: number, probes = - 1 ): { ms:
 
 	}
 
-	return { ms: performance.now() - start, sh: Array.from( sh ), shadowDraws: shadowDraws - draws };
+	return sh;
 
 }
 
@@ -235,9 +249,8 @@ function captureLoop(
 
 	const entry = sceneNamed( name );
 	const positions = probes < 0 ? entry.positions : entry.positions.subarray( 0, 3 * probes );
-	const count = positions.length / 3;
 	setShadows( entry, mode !== 'none' );
-	const { cubeCamera, cubeRenderTarget, projector } = capturerFor( resolution );
+	const capturer = capturerFor( resolution );
 	entry.scene.updateMatrixWorld();
 	if ( mode !== 'none' ) {
 
@@ -245,35 +258,16 @@ function captureLoop(
 		renderer.shadowMap.needsUpdate = true;
 		if ( mode === 'frozen' ) {
 
-			renderTiny( entry, cubeCamera.children[ 0 ] as THREE.Camera );
+			renderTiny( entry, capturer.cubeCamera.children[ 0 ] as THREE.Camera );
 			finishGL();
 
 		}
 
 	}
 
-	const sh = new Float32Array( 27 * count );
-	const batch = SHProjector.batchCapacity( resolution );
 	const draws = shadowDraws;
 	const start = performance.now();
-	for ( let first = 0; first < count; first += batch ) {
-
-		const size = Math.min( batch, count - first );
-		projector.begin( 'cube', resolution, size );
-		for ( let i = first; i < first + size; i ++ ) {
-
-			cubeCamera.position.fromArray( positions, 3 * i );
-			cubeCamera.updateMatrixWorld();
-			renderer.autoClear = true;
-			cubeCamera.update( renderer, entry.scene );
-			projector.add( cubeRenderTarget.texture );
-
-		}
-
-		projector.finish( sh, 27 * first );
-
-	}
-
+	const sh = captureWithCubeCamera( entry, positions, resolution, capturer );
 	const ms = performance.now() - start;
 	renderer.shadowMap.autoUpdate = true;
 	return { ms, sh: Array.from( sh ), shadowDraws: shadowDraws - draws };
