@@ -51,6 +51,32 @@ export interface BakedZone {
 }
 
 /**
+ * How a volume's SH were fitted (docs/format.md, "FITS"): the record of a least-squares fit of the
+ * probes' SH (and gradients) to extra captured points, stored with the bake.
+ */
+export interface BakedFit {
+
+	/** Number of fit samples, an integer ≥ 0. */
+	samples: number;
+
+	/** Whether gradients were fitted too. */
+	gradients: boolean;
+
+	/** Strength of the pull toward each probe's captured SH (scale-free), ≥ 0. */
+	lambda: number;
+
+	/** Strength of the pull toward zero gradient (scale-free), ≥ 0; 0 without gradients. */
+	gradientLambda: number;
+
+	/** Mean held-out error at the chosen λ (cross-validation), ≥ 0; null when λ were given. */
+	crossValidationError: number | null;
+
+	/** Free text: how the samples were made, e.g. 'dense captures at spacing 0.5'. */
+	source?: string;
+
+}
+
+/**
  * A baked volume, as {@link decodeBakedVolume} and {@link bakedVolumeFromJSON} return it: every
  * field present and valid.
  */
@@ -86,6 +112,15 @@ export interface BakedVolumeData {
 	/** Free-form text, e.g. the tool and scene that produced the bake ('' when none). */
 	metadata: string;
 
+	/**
+	 * Spatial SH gradient per probe, 81 floats: `gradients[ 81 * i + 27 * a + k ]` = ∂(SH float k)/∂(axis a),
+	 * a = 0 x, 1 y, 2 z; null for plain probes (and in files written before version 1.1).
+	 */
+	gradients: Float32Array | null;
+
+	/** How the SH were fitted; null when they are the captured ones (or unknown). */
+	fit: BakedFit | null;
+
 }
 
 /** What {@link encodeBakedVolume} and {@link bakedVolumeToJSON} accept: only positions and SH are required. */
@@ -120,6 +155,12 @@ export interface BakedVolumeInput {
 
 	/** Free-form text. */
 	metadata?: string;
+
+	/** 81 floats per probe (layout of {@link BakedVolumeData.gradients}); omit or null for plain probes. */
+	gradients?: ArrayLike<number> | null;
+
+	/** How the SH were fitted; omit or null when they are the captured ones. */
+	fit?: BakedFit | null;
 
 }
 
@@ -179,5 +220,11 @@ export interface BakedVolumeJSON {
 
 	/** Free-form text. */
 	metadata: string;
+
+	/** 81 per probe (version ≥ 1.1; absent for plain probes). */
+	gradients?: number[];
+
+	/** How the SH were fitted (version ≥ 1.1; absent when not fitted). */
+	fit?: BakedFit;
 
 }

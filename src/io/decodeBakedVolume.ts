@@ -302,6 +302,6 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	}
 
 	const metadata = mta ? readString( where, 'metadata', bytes, mta.offset, mta.length ) : '';
-	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata };
+	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients: null, fit: null };
 
 }

@@ -11,7 +11,7 @@ export {
 } from './bakedVolumeFormat.js';
 export type {
 	BakedVolumeData, BakedVolumeInput, BakedVolumeJSON, BakedZone, BakedCapture, BakedCaptureSettings,
-	BakedProbeRole, EncodeBakedVolumeOptions,
+	BakedProbeRole, BakedFit, EncodeBakedVolumeOptions,
 } from './bakedVolumeTypes.js';
 export { BakedVolumeError, type BakedVolumeErrorCode } from './BakedVolumeError.js';
 export { crc32 } from './crc32.js';

@@ -78,6 +78,6 @@ export function validateBakedVolume( input: BakedVolumeInput, where = 'validateB
 	if ( typeof metadata !== 'string' ) fail( 'argument', where, 'metadata must be a string.' );
 	checkText( where, 'metadata', metadata );
 
-	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata };
+	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients: null, fit: null };
 
 }
