@@ -1,4 +1,4 @@
-import { assertPoints, assertSH } from '../validate.js';
+import { assertArrayLike, assertPoints, assertSH } from '../validate.js';
 import { evaluateIrradiance } from '../sh/irradiance.js';
 
 /**
@@ -42,7 +42,7 @@ export interface IrradianceErrorResult extends IrradianceErrorSummary {
 	/** Error of each point, in point order. */
 	perPoint: Float64Array;
 
-	/** The normaliser: mean true irradiance over all points, normals and colour channels. */
+	/** The normaliser: mean true irradiance over all points (weighted, with weights), normals and colour channels. */
 	meanIrradiance: number;
 
 }
@@ -57,7 +57,9 @@ export interface IrradianceErrorResult extends IrradianceErrorSummary {
  * with E(n) the Ramamoorthi–Hanrahan irradiance of the SH9 (`evaluateIrradiance`, what a
  * Lambertian surface facing n receives) and n_k the {@link IRRADIANCE_ERROR_NORMALS} by default.
  * Reported: mean, 95th percentile and max over points; 0.05 means "off by 5 % of the average
- * irradiance".
+ * irradiance". With `weights` (e.g. a region of interest, `regionWeights`), the mean, the 95th
+ * percentile and Ē are weighted and the max is over points of weight > 0: weights 1 inside a region
+ * and 0 outside give exactly the error of the inside points alone.
  *
  * Why these choices:
  * - **Irradiance, not SH coefficients**: what a diffuse surface shows; coefficient differences
@@ -75,19 +77,50 @@ export interface IrradianceErrorResult extends IrradianceErrorSummary {
  * {@link irradianceErrorFromTables}).
  * @param predictedSH 27 floats per point, e.g. the layout's interpolation at each dense probe.
  * @param trueSH 27 floats per point, the same count: the captured truth.
- * @param normals Directions, x, y, z each, unit length (default {@link IRRADIANCE_ERROR_NORMALS}).
+ * @param normals Directions, x, y, z each, unit length (default {@link IRRADIANCE_ERROR_NORMALS}; `undefined` for the default).
+ * @param weights One weight ≥ 0 per point, not all 0 (default: all count alike).
  */
 export function irradianceError(
-	predictedSH: ArrayLike<number>, trueSH: ArrayLike<number>, normals: ArrayLike<number> = IRRADIANCE_ERROR_NORMALS
+	predictedSH: ArrayLike<number>, trueSH: ArrayLike<number>, normals: ArrayLike<number> = IRRADIANCE_ERROR_NORMALS,
+	weights?: ArrayLike<number>,
 ): IrradianceErrorResult {
 
 	const where = 'irradianceError';
 	const count = assertSH( where, 'trueSH', trueSH );
 	assertSH( where, 'predictedSH', predictedSH, count );
 	assertPoints( where, 'normals', normals, 1 );
+	if ( weights !== undefined ) assertPointWeights( where, 'weights', weights, count );
 	const truth = irradianceAtNormals( trueSH, normals );
 	const predicted = irradianceAtNormals( predictedSH, normals );
-	return irradianceErrorFromTables( predicted, truth, normals.length / 3, where );
+	return irradianceErrorFromTables( predicted, truth, normals.length / 3, where, weights );
+
+}
+
+/**
+ * Checks per-point weights: one finite number ≥ 0 per point, not all 0.
+ * @param where Function name for messages.
+ * @param name The argument's name for messages.
+ * @param count The number of points.
+ */
+export function assertPointWeights( where: string, name: string, weights: unknown, count: number ): asserts weights is ArrayLike<number> {
+
+	assertArrayLike( where, name, weights );
+	if ( weights.length !== count ) throw new RangeError( `${where}: ${name} must have one weight per point (${count}), got length ${weights.length}.` );
+	let sum = 0;
+	for ( let p = 0; p < count; p ++ ) {
+
+		const w = weights[ p ];
+		if ( typeof w !== 'number' || ! ( w >= 0 ) || w === Infinity ) {
+
+			throw new RangeError( `${where}: ${name}[${p}] is ${String( w )}; weights must be finite numbers ≥ 0.` );
+
+		}
+
+		sum += w;
+
+	}
+
+	if ( ! ( sum > 0 ) ) throw new RangeError( `${where}: ${name} are all 0; at least one point must count.` );
 
 }
 
@@ -150,15 +183,18 @@ export function blendRows(
 
 /**
  * {@link irradianceError} from irradiance tables (as made by {@link irradianceAtNormals}): the
- * shared arithmetic, so every caller measures the same thing.
+ * shared arithmetic, so every caller measures the same thing. `weights` (one per point, checked by
+ * the caller) weight the summary and Ē as in {@link irradianceError}.
  * @param predicted Predicted irradiance table.
  * @param truth True irradiance table, same layout and length.
  * @param directions Number of normals K the tables were made with.
  * @param where Function name for error messages.
  */
-export function irradianceErrorFromTables( predicted: ArrayLike<number>, truth: ArrayLike<number>, directions: number, where = 'irradianceErrorFromTables' ): IrradianceErrorResult {
+export function irradianceErrorFromTables(
+	predicted: ArrayLike<number>, truth: ArrayLike<number>, directions: number, where = 'irradianceErrorFromTables', weights?: ArrayLike<number>,
+): IrradianceErrorResult {
 
-	const { meanIrradiance, scale } = irradianceErrorScale( truth, directions, where );
+	const { meanIrradiance, scale } = irradianceErrorScale( truth, directions, where, weights );
 	const count = truth.length / ( 3 * directions );
 	const perPoint = new Float64Array( count );
 	for ( let p = 0; p < count; p ++ ) {
@@ -167,7 +203,7 @@ export function irradianceErrorFromTables( predicted: ArrayLike<number>, truth: 
 
 	}
 
-	return { ...summarizeErrors( perPoint ), perPoint, meanIrradiance };
+	return { ...summarizeErrors( perPoint, weights ), perPoint, meanIrradiance };
 
 }
 
@@ -200,12 +236,15 @@ export function pointIrradianceError(
 
 /**
  * The normaliser of {@link irradianceError} for a true irradiance table: Ē, the mean of all its
- * entries, and `scale = 1 / (K · Ē)` for {@link pointIrradianceError}.
+ * entries (with `weights`, one per point: the weighted mean of the points' row means), and
+ * `scale = 1 / (K · Ē)` for {@link pointIrradianceError}.
  * @throws RangeError when Ē ≤ 0 (all-black truth: a relative error means nothing).
  */
-export function irradianceErrorScale( truth: ArrayLike<number>, directions: number, where = 'irradianceErrorScale' ): { meanIrradiance: number; scale: number } {
+export function irradianceErrorScale(
+	truth: ArrayLike<number>, directions: number, where = 'irradianceErrorScale', weights?: ArrayLike<number>,
+): { meanIrradiance: number; scale: number } {
 
-	const meanIrradiance = meanOf( truth );
+	const meanIrradiance = weights === undefined ? meanOf( truth ) : weightedRowMean( truth, 3 * directions, weights );
 	if ( ! ( meanIrradiance > 0 ) ) {
 
 		throw new RangeError( `${where}: the true irradiance averages ${meanIrradiance} over all points and normals; the relative error needs a positive mean (is the SH all black?).` );
@@ -216,13 +255,70 @@ export function irradianceErrorScale( truth: ArrayLike<number>, directions: numb
 
 }
 
-/** Mean, 95th percentile (nearest rank) and max of per-point errors. */
-export function summarizeErrors( perPoint: ArrayLike<number> ): IrradianceErrorSummary {
+/**
+ * Mean, 95th percentile (nearest rank) and max of per-point errors. With `weights` (one ≥ 0 per
+ * point, not all 0): the weighted mean, the weighted nearest rank (the smallest error whose
+ * cumulative weight, in ascending order, reaches 95 % of the total) and the max over points of
+ * weight > 0.
+ */
+export function summarizeErrors( perPoint: ArrayLike<number>, weights?: ArrayLike<number> ): IrradianceErrorSummary {
 
 	const count = perPoint.length;
 	if ( count === 0 ) return { mean: 0, p95: 0, max: 0 };
+	if ( weights !== undefined ) return summarizeWeighted( perPoint, weights );
 	const sorted = Float64Array.from( perPoint ).sort();
 	return { mean: meanOf( perPoint ), p95: sorted[ Math.ceil( 0.95 * count ) - 1 ], max: sorted[ count - 1 ] };
+
+}
+
+function summarizeWeighted( perPoint: ArrayLike<number>, weights: ArrayLike<number> ): IrradianceErrorSummary {
+
+	const byError = Array.from( { length: perPoint.length }, ( _, p ) => p ).filter( ( p ) => weights[ p ] > 0 )
+		.sort( ( a, b ) => perPoint[ a ] - perPoint[ b ] || a - b );
+	let total = 0, sum = 0;
+	for ( const p of byError ) {
+
+		total += weights[ p ];
+		sum += weights[ p ] * perPoint[ p ];
+
+	}
+
+	if ( byError.length === 0 ) return { mean: 0, p95: 0, max: 0 };
+	// The rank's cumulative weight is compared with a small slack, so 20 equal weights reach 95 % at the 19th as counts do.
+	const rank = 0.95 * total * ( 1 - 1e-12 );
+	let cumulative = 0, p95 = perPoint[ byError[ byError.length - 1 ] ];
+	for ( const p of byError ) {
+
+		cumulative += weights[ p ];
+		if ( cumulative >= rank ) {
+
+			p95 = perPoint[ p ];
+			break;
+
+		}
+
+	}
+
+	return { mean: sum / total, p95, max: perPoint[ byError[ byError.length - 1 ] ] };
+
+}
+
+/** Σ_p w_p · mean( row p ) / Σ_p w_p over a table of `stride` floats per point. */
+function weightedRowMean( table: ArrayLike<number>, stride: number, weights: ArrayLike<number> ): number {
+
+	let sum = 0, total = 0;
+	for ( let p = 0; p < weights.length; p ++ ) {
+
+		const w = weights[ p ];
+		if ( w === 0 ) continue;
+		let row = 0;
+		for ( let j = stride * p, end = j + stride; j < end; j ++ ) row += table[ j ];
+		sum += w * row / stride;
+		total += w;
+
+	}
+
+	return total > 0 ? sum / total : 0;
 
 }
 

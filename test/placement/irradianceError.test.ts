@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { IRRADIANCE_ERROR_NORMALS, irradianceError } from '../../src/placement/irradianceError.js';
+import { IRRADIANCE_ERROR_NORMALS, irradianceError, summarizeErrors } from '../../src/placement/irradianceError.js';
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 /** SH of a uniform environment: only L00, per channel. Its irradiance is the same in every direction. */
 function uniform( ...l00PerProbe: [ number, number, number ][] ): Float32Array {
@@ -83,6 +84,62 @@ describe( 'irradianceError (the one error measure of layouts)', () => {
 		expect( () => irradianceError( new Float32Array( 27 ), new Float32Array( 54 ).fill( 1 ) ) ).toThrow( /^irradianceError: predictedSH must have length 54/ );
 		expect( () => irradianceError( new Float32Array( 27 ).fill( NaN ), new Float32Array( 27 ).fill( 1 ) ) ).toThrow( /^irradianceError: predictedSH\[0\] is NaN/ );
 		expect( () => irradianceError( new Float32Array( 27 ), new Float32Array( 27 ) ) ).toThrow( /^irradianceError: the true irradiance averages 0/ );
+
+	} );
+
+	it( 'with weights: all 1 changes nothing; integer weights count a point that many times; 0/1 weights measure the inside alone', () => {
+
+		const random = mulberry32( 5 );
+		const count = 40;
+		const truth = Float32Array.from( { length: 27 * count }, ( _, i ) => ( i % 27 < 3 ? 2 : 0 ) + 0.5 * random() );
+		const predicted = truth.map( ( v ) => v + 0.3 * ( random() - 0.5 ) );
+		const plain = irradianceError( predicted, truth );
+		const ones = irradianceError( predicted, truth, undefined, new Float64Array( count ).fill( 1 ) );
+		for ( const key of [ 'mean', 'p95', 'max', 'meanIrradiance' ] as const ) expect( ones[ key ] ).toBeCloseTo( plain[ key ], 12 );
+
+		// Weight k ≡ the point repeated k times (the unweighted measure of the repeated set).
+		const weights = Array.from( { length: count }, ( _, p ) => p % 4 );
+		const repeated: number[] = [];
+		for ( let p = 0; p < count; p ++ ) for ( let k = 0; k < weights[ p ]; k ++ ) repeated.push( p );
+		const take = ( sh: Float32Array, points: number[] ) => Float32Array.from( points.flatMap( ( p ) => Array.from( sh.subarray( 27 * p, 27 * p + 27 ) ) ) );
+		const expanded = irradianceError( take( predicted, repeated ), take( truth, repeated ) );
+		const weighted = irradianceError( predicted, truth, IRRADIANCE_ERROR_NORMALS, weights );
+		expect( weighted.mean ).toBeCloseTo( expanded.mean, 12 );
+		expect( weighted.p95 ).toBeCloseTo( expanded.p95, 12 );
+		expect( weighted.max ).toBeCloseTo( expanded.max, 12 );
+		expect( weighted.meanIrradiance ).toBeCloseTo( expanded.meanIrradiance, 12 );
+
+		// 0/1: the inside points alone; the outside ones (weight 0) are still listed in perPoint.
+		const inside = Array.from( { length: count }, ( _, p ) => p ).filter( ( p ) => p < 10 );
+		const alone = irradianceError( take( predicted, inside ), take( truth, inside ) );
+		const region = irradianceError( predicted, truth, undefined, Array.from( { length: count }, ( _, p ) => p < 10 ? 1 : 0 ) );
+		expect( region.mean ).toBeCloseTo( alone.mean, 12 );
+		expect( region.max ).toBeCloseTo( alone.max, 12 );
+		expect( Array.from( region.perPoint.subarray( 0, 10 ) ).map( ( v, p ) => v - alone.perPoint[ p ] ).every( ( d ) => Math.abs( d ) < 1e-12 ) ).toBe( true );
+		expect( region.perPoint.length ).toBe( count );
+
+	} );
+
+	it( 'weighted 95th percentile: the smallest error whose cumulative weight reaches 95 % (weighted nearest rank)', () => {
+
+		const errors = [ 0.4, 0.1, 0.3, 0.2 ];
+		expect( summarizeErrors( errors, [ 17, 1, 1, 1 ] ).p95 ).toBe( 0.4 ); // cumulative 1, 2, 3, 20 of 20
+		expect( summarizeErrors( errors, [ 1, 10, 4, 5 ] ).p95 ).toBe( 0.3 ); // 10, 15, 19 ≥ 19
+		expect( summarizeErrors( errors, [ 1, 10, 3.9, 5 ] ).p95 ).toBe( 0.4 ); // 10, 15, 18.9 < 18.905
+		expect( summarizeErrors( errors, [ 0, 1, 1, 0 ] ) ).toEqual( { mean: 0.2, p95: 0.3, max: 0.3 } ); // max over weight > 0
+		// Equal weights: the unweighted nearest rank, ceil( 0.95 n ).
+		const twenty = Array.from( { length: 20 }, ( _, i ) => i / 20 );
+		expect( summarizeErrors( twenty, new Array( 20 ).fill( 0.1 ) ).p95 ).toBe( summarizeErrors( twenty ).p95 );
+
+	} );
+
+	it( 'rejects weights of the wrong length, negative or NaN weights and all-zero weights', () => {
+
+		const truth = uniform( [ 1, 1, 1 ], [ 2, 2, 2 ] );
+		expect( () => irradianceError( truth, truth, undefined, [ 1 ] ) ).toThrow( /^irradianceError: weights must have one weight per point \(2\), got length 1/ );
+		expect( () => irradianceError( truth, truth, undefined, [ 1, - 1 ] ) ).toThrow( /^irradianceError: weights\[1\] is -1; weights must be finite numbers ≥ 0/ );
+		expect( () => irradianceError( truth, truth, undefined, [ NaN, 1 ] ) ).toThrow( /^irradianceError: weights\[0\] is NaN/ );
+		expect( () => irradianceError( truth, truth, undefined, [ 0, 0 ] ) ).toThrow( /^irradianceError: weights are all 0/ );
 
 	} );
 
