@@ -98,7 +98,7 @@ describe( 'regionWeights (1 inside the region of interest, outsideWeight outside
 	it( 'weights points in boxes (faces included), near given points and in the walkable region', () => {
 
 		const boxes = [ { min: [ - 1, - 1, - 1 ], max: [ 0, 0.5, 0 ] }, { min: [ 1, 1, 1 ], max: [ 1, 1, 1 ] } ];
-		const navPoints = [ 1.5, 0, - 1.5, - 1.5, - 1.5, 1.5 ];
+		const navPoints = [ 1.5, 0, - 1.5, - 1.5, - 1.5, 1.5 ], r = 0.4;
 		const walkable = new WalkableRegion( level() );
 		const positions = Float64Array.of( ...points, 1, 1, 1 ); // the last lies exactly on the flat box
 		const weights = regionWeights( positions, { boxes, points: navPoints, radius: 0.4, walkable } );
@@ -107,7 +107,7 @@ describe( 'regionWeights (1 inside the region of interest, outsideWeight outside
 
 			const [ x, y, z ] = positions.subarray( 3 * p, 3 * p + 3 );
 			const inBox = boxes.some( ( b ) => [ x, y, z ].every( ( v, a ) => v >= b.min[ a ] && v <= b.max[ a ] ) );
-			const near = [ 0, 1 ].some( ( k ) => Math.hypot( x - navPoints[ 3 * k ], y - navPoints[ 3 * k + 1 ], z - navPoints[ 3 * k + 2 ] ) <= 0.4 );
+			const near = [ 0, 1 ].some( ( k ) => Math.hypot( x - navPoints[ 3 * k ], y - navPoints[ 3 * k + 1 ], z - navPoints[ 3 * k + 2 ] ) <= r );
 			const expected = inBox || near || walkable.contains( x, y, z ) ? 1 : 0.1;
 			expect( weights[ p ] ).toBe( expected );
 			if ( expected === 1 ) inside ++;
@@ -124,7 +124,8 @@ describe( 'regionWeights (1 inside the region of interest, outsideWeight outside
 
 	it( 'uses the given outside weight (0 leaves the outside out)', () => {
 
-		const weights = regionWeights( [ 0, 0, 0, 5, 5, 5 ], { boxes: [ { min: [ - 1, - 1, - 1 ], max: [ 1, 1, 1 ] } ], outsideWeight: 0 } );
+		const box = { min: [ - 1, - 1, - 1 ], max: [ 1, 1, 1 ] };
+		const weights = regionWeights( [ 0, 0, 0, 5, 5, 5 ], { boxes: [ box ], outsideWeight: 0 } );
 		expect( Array.from( weights ) ).toEqual( [ 1, 0 ] );
 
 	} );
