@@ -107,7 +107,7 @@ describe( 'regionWeights (1 inside the region of interest, outsideWeight outside
 
 			const [ x, y, z ] = positions.subarray( 3 * p, 3 * p + 3 );
 			const inBox = boxes.some( ( b ) => [ x, y, z ].every( ( v, a ) => v >= b.min[ a ] && v <= b.max[ a ] ) );
-			const near = [ 0, 1 ].some( ( k ) => Math.hypot( x - navPoints[ 3 * k ], y - navPoints[ 3 * k + 1 ], z - navPoints[ 3 * k + 2 ] ) <= r );
+			const near = [ 0, 3 ].some( ( k ) => Math.hypot( x - navPoints[ k ], y - navPoints[ k + 1 ], z - navPoints[ k + 2 ] ) <= r );
 			const expected = inBox || near || walkable.contains( x, y, z ) ? 1 : 0.1;
 			expect( weights[ p ] ).toBe( expected );
 			if ( expected === 1 ) inside ++;
