@@ -13,8 +13,11 @@ export const BAKED_ROLES: readonly ProbeRole[] = PROBE_ROLES;
 /** Major version this code reads and writes. */
 export const BAKED_VOLUME_VERSION_MAJOR = 1;
 
-/** Minor version this code writes. */
-export const BAKED_VOLUME_VERSION_MINOR = 0;
+/**
+ * Newest minor version this code writes: 1.1 added the optional GRAD and FITS sections. A file
+ * without them is written as 1.0 ({@link bakedVolumeMinorVersion}), byte for byte what 1.0 wrote.
+ */
+export const BAKED_VOLUME_VERSION_MINOR = 1;
 
 /** The 8 magic bytes at offset 0: 0xAB 'L' 'P' 'V' '\r' '\n' 0x1A '\n'. */
 export const BAKED_VOLUME_MAGIC: readonly number[] = [ 0xAB, 0x4C, 0x50, 0x56, 0x0D, 0x0A, 0x1A, 0x0A ];
@@ -53,7 +56,19 @@ export const BAKED_SECTION = {
 	BOUNDS: fourCC( 'BNDS' ),
 	CAPTURE: fourCC( 'CAPT' ),
 	METADATA: fourCC( 'META' ),
+	GRADIENTS: fourCC( 'GRAD' ),
+	FIT: fourCC( 'FITS' ),
 } as const;
+
+/** Floats per probe of the GRAD section: ∂(SH float k)/∂(axis a) at 27·a + k. */
+export const GRADIENT_FLOATS = 81;
+
+/** The minor version a writer gives a file: the lowest whose sections it holds (1 with gradients or a fit record, else 0). */
+export function bakedVolumeMinorVersion( data: { gradients: unknown; fit: unknown } ): number {
+
+	return data.gradients !== null || data.fit !== null ? 1 : 0;
+
+}
 
 /** The section ids this reader knows. */
 export const KNOWN_SECTIONS = new Set<number>( Object.values( BAKED_SECTION ) );

@@ -1,21 +1,22 @@
 import type { ProbeRole } from '../roles.js';
-import { BAKED_VOLUME_JSON_FORMAT, BAKED_VOLUME_VERSION_MAJOR, BAKED_VOLUME_VERSION_MINOR } from './bakedVolumeFormat.js';
+import { BAKED_VOLUME_JSON_FORMAT, BAKED_VOLUME_VERSION_MAJOR, bakedVolumeMinorVersion } from './bakedVolumeFormat.js';
 import { fail } from './checks.js';
 import { validateBakedVolume } from './validateBakedVolume.js';
-import type { BakedCapture, BakedVolumeData, BakedVolumeInput, BakedVolumeJSON } from './bakedVolumeTypes.js';
+import type { BakedCapture, BakedFit, BakedVolumeData, BakedVolumeInput, BakedVolumeJSON } from './bakedVolumeTypes.js';
 
 /* The JSON form of a baked volume (docs/format.md, "JSON form"): the binary sections as arrays. */
 
 /**
  * The JSON form of a volume: a plain object for `JSON.stringify` (numbers print so that they read
- * back exactly, so the round trip is lossless). Validates the input like {@link encodeBakedVolume}.
+ * back exactly, so the round trip is lossless). Validates the input like {@link encodeBakedVolume};
+ * version 1.1 with `gradients` or `fit`, else 1.0.
  */
 export function bakedVolumeToJSON( input: BakedVolumeInput ): BakedVolumeJSON {
 
 	const data = validateBakedVolume( input, 'bakedVolumeToJSON' );
-	return {
+	const json: BakedVolumeJSON = {
 		format: BAKED_VOLUME_JSON_FORMAT,
-		version: [ BAKED_VOLUME_VERSION_MAJOR, BAKED_VOLUME_VERSION_MINOR ],
+		version: [ BAKED_VOLUME_VERSION_MAJOR, bakedVolumeMinorVersion( data ) ],
 		probeCount: data.positions.length / 3,
 		tetrahedronCount: data.tetrahedra.length / 4,
 		positions: Array.from( data.positions ),
@@ -29,6 +30,9 @@ export function bakedVolumeToJSON( input: BakedVolumeInput ): BakedVolumeJSON {
 		capture: JSON.parse( JSON.stringify( data.capture ) ),
 		metadata: data.metadata,
 	};
+	if ( data.gradients ) json.gradients = Array.from( data.gradients );
+	if ( data.fit ) json.fit = { ...data.fit };
+	return json;
 
 }
 
@@ -73,6 +77,8 @@ export function bakedVolumeFromJSON( json: unknown ): BakedVolumeData {
 		bounds: o.bounds as number[] | undefined,
 		capture: o.capture as BakedCapture | undefined,
 		metadata: o.metadata as string | undefined,
+		gradients: o.gradients as number[] | undefined,
+		fit: o.fit as BakedFit | undefined,
 	}, where );
 	if ( o.probeCount !== undefined && o.probeCount !== data.positions.length / 3 ) fail( 'count', where, `probeCount is ${o.probeCount} but positions holds ${data.positions.length / 3} probes.` );
 	if ( o.tetrahedronCount !== undefined && o.tetrahedronCount !== data.tetrahedra.length / 4 ) fail( 'count', where, `tetrahedronCount is ${o.tetrahedronCount} but tetrahedra holds ${data.tetrahedra.length / 4}.` );

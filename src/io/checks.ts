@@ -2,7 +2,7 @@ import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahed
 import { isProbeRole, PROBE_ROLES, type RuleReject, type RuleViolation } from '../roles.js';
 import { POSITION_LIMIT, SH_LIMIT, firstBeyond, isStorableText } from '../validate.js';
 import { BakedVolumeError, type BakedVolumeErrorCode } from './BakedVolumeError.js';
-import type { BakedCapture, BakedCaptureSettings } from './bakedVolumeTypes.js';
+import type { BakedCapture, BakedCaptureSettings, BakedFit } from './bakedVolumeTypes.js';
 
 /*
  * Field checks shared by the binary reader, the JSON reader and the writers: each throws a
@@ -81,6 +81,57 @@ export function checkSH( where: string, name: string, sh: ArrayLike<number> ): v
 	checkFinite( where, name, sh );
 	const i = firstBeyond( sh, SH_LIMIT );
 	if ( i >= 0 ) fail( 'range', where, `${name}[${i}] is ${sh[ i ]}; probe SH values must be within ±${SH_LIMIT.toPrecision( 3 )}.` );
+
+}
+
+/** Finite gradients ('nan') with every |value| ≤ SH_LIMIT ('range'), the bound of the SH they change. */
+export function checkGradients( where: string, gradients: ArrayLike<number> ): void {
+
+	checkFinite( where, 'gradients', gradients );
+	const i = firstBeyond( gradients, SH_LIMIT );
+	if ( i >= 0 ) fail( 'range', where, `gradients[${i}] is ${gradients[ i ]}; gradient values must be within ±${SH_LIMIT.toPrecision( 3 )}.` );
+
+}
+
+/**
+ * A fit record (the FITS section's JSON, the JSON form's `fit`, an encoder's input), checked and
+ * copied without unknown members; null or undefined: null. A record saying gradients were fitted
+ * needs the gradients ('count' when `hasGradients` is false).
+ */
+export function checkFit( where: string, fit: unknown, hasGradients: boolean ): BakedFit | null {
+
+	if ( fit === undefined || fit === null ) return null;
+	if ( typeof fit !== 'object' || Array.isArray( fit ) ) fail( 'json', where, 'fit must be an object { samples, gradients, lambda, gradientLambda, crossValidationError, source? }.' );
+	const f = fit as Record<string, unknown>;
+	const number = ( key: string, nullable: boolean ): number | null => {
+
+		const v = f[ key ];
+		if ( nullable && v === null ) return null;
+		const expected = nullable ? 'a number ≥ 0 or null' : 'a number ≥ 0';
+		if ( typeof v !== 'number' ) fail( 'json', where, `fit.${key} is ${JSON.stringify( v ) ?? String( v )}; expected ${expected}.` );
+		if ( ! Number.isFinite( v ) ) fail( 'nan', where, `fit.${key} is ${v}; expected a finite number ≥ 0.` );
+		if ( v < 0 ) fail( 'range', where, `fit.${key} is ${v}; expected ≥ 0.` );
+		return v;
+
+	};
+
+	const samples = number( 'samples', false )!;
+	if ( ! Number.isInteger( samples ) ) fail( 'range', where, `fit.samples is ${samples}; expected an integer ≥ 0 (the number of fit samples).` );
+	if ( typeof f.gradients !== 'boolean' ) fail( 'json', where, `fit.gradients is ${JSON.stringify( f.gradients ) ?? String( f.gradients )}; expected true or false.` );
+	if ( f.gradients && ! hasGradients ) fail( 'count', where, 'fit.gradients is true but the volume holds no gradients; store them or say the fit had none.' );
+	const out: BakedFit = {
+		samples, gradients: f.gradients, lambda: number( 'lambda', false )!, gradientLambda: number( 'gradientLambda', false )!,
+		crossValidationError: number( 'crossValidationError', true ),
+	};
+	if ( f.source !== undefined ) {
+
+		if ( typeof f.source !== 'string' ) fail( 'json', where, `fit.source is ${JSON.stringify( f.source ) ?? String( f.source )}; expected a string.` );
+		checkText( where, 'fit.source', f.source );
+		out.source = f.source;
+
+	}
+
+	return out;
 
 }
 

@@ -4,9 +4,12 @@ import { crc32 } from './crc32.js';
 import { float16Table } from './float16.js';
 import {
 	align8, BAKED_ROLES, BAKED_SECTION, BAKED_VOLUME_MAGIC, BAKED_VOLUME_VERSION_MAJOR,
-	ENTRY_SIZE, FLAG_SH_FLOAT16, HEADER_SIZE, KNOWN_SECTIONS, LITTLE_ENDIAN, SECTION_REQUIRED, sectionName,
+	ENTRY_SIZE, FLAG_SH_FLOAT16, GRADIENT_FLOATS, HEADER_SIZE, KNOWN_SECTIONS, LITTLE_ENDIAN, SECTION_REQUIRED, sectionName,
 } from './bakedVolumeFormat.js';
-import { boxOf, checkBox, checkCapture, checkFinite, checkPositions, checkSH, checkTetrahedralization, codecReject, fail } from './checks.js';
+import {
+	boxOf, checkBox, checkCapture, checkFinite, checkFit, checkGradients, checkPositions, checkSH, checkTetrahedralization,
+	codecReject, fail,
+} from './checks.js';
 import type { BakedCapture, BakedVolumeData, BakedZone } from './bakedVolumeTypes.js';
 
 /*
@@ -58,6 +61,43 @@ function readString( where: string, name: string, bytes: Uint8Array, at: number,
 		fail( 'utf8', where, `${name} is not valid UTF-8.` );
 
 	}
+
+}
+
+/** The JSON value of `length` bytes of UTF-8 at `at` ('utf8', 'json' when invalid); `name` says what it is. */
+function readJSON( where: string, name: string, bytes: Uint8Array, at: number, length: number ): unknown {
+
+	const text = readString( where, name, bytes, at, length );
+	try {
+
+		return JSON.parse( text );
+
+	} catch ( error ) {
+
+		fail( 'json', where, `${name} is not valid JSON (${( error as Error ).message}).` );
+
+	}
+
+}
+
+/**
+ * `length` floats at `at`: float32 viewed in place where alignment allows (as {@link readTyped}),
+ * float16 converted to float32, whose NaN and Infinity bit patterns are refused here ('nan').
+ */
+function readFloats( where: string, name: string, view: DataView, at: number, length: number, half: boolean ): Float32Array {
+
+	if ( ! half ) return readTyped( Float32Array, view, at, length );
+	const bits = readTyped( Uint16Array, view, at, length );
+	const table = float16Table();
+	const out = new Float32Array( length );
+	for ( let i = 0; i < length; i ++ ) {
+
+		if ( ( bits[ i ] & 0x7C00 ) === 0x7C00 ) fail( 'nan', where, `${name}[${i}] is ${bits[ i ] & 0x3FF ? 'NaN' : 'Infinity'} (float16 bits 0x${bits[ i ].toString( 16 )}); every value must be finite.` );
+		out[ i ] = table[ bits[ i ] ];
+
+	}
+
+	return out;
 
 }
 
@@ -173,29 +213,14 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	const bnd = section( BAKED_SECTION.BOUNDS, 48, false, '6 float64' );
 	const cpt = section( BAKED_SECTION.CAPTURE, null, false, 'UTF-8 JSON' );
 	const mta = section( BAKED_SECTION.METADATA, null, false, 'UTF-8 text' );
+	const grd = section( BAKED_SECTION.GRADIENTS, ( half ? 162 : 324 ) * probeCount, false, `${probeCount} probes × 81 ${half ? 'float16' : 'float32'}` );
+	const fts = section( BAKED_SECTION.FIT, null, false, 'UTF-8 JSON' );
 
 	const positions = readTyped( Float64Array, view, pos.offset, 3 * probeCount );
 	checkPositions( where, positions );
 
-	let sh: Float32Array;
-	if ( half ) {
-
-		const bits = readTyped( Uint16Array, view, shs.offset, 27 * probeCount );
-		const table = float16Table();
-		sh = new Float32Array( bits.length );
-		for ( let i = 0; i < bits.length; i ++ ) {
-
-			if ( ( bits[ i ] & 0x7C00 ) === 0x7C00 ) fail( 'nan', where, `sh[${i}] is ${bits[ i ] & 0x3FF ? 'NaN' : 'Infinity'} (float16 bits 0x${bits[ i ].toString( 16 )}); every value must be finite.` );
-			sh[ i ] = table[ bits[ i ] ];
-
-		}
-
-	} else {
-
-		sh = readTyped( Float32Array, view, shs.offset, 27 * probeCount );
-		checkSH( where, 'sh', sh );
-
-	}
+	const sh = readFloats( where, 'sh', view, shs.offset, 27 * probeCount, half );
+	checkSH( where, 'sh', sh );
 
 	let tetrahedra: Uint32Array = new Uint32Array( 0 ), neighbors: Int32Array = new Int32Array( 0 );
 	if ( tetCount > 0 ) {
@@ -282,26 +307,17 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 
 	}
 
-	let capture: BakedCapture = {};
-	if ( cpt ) {
+	const capture: BakedCapture = cpt ? checkCapture( where, readJSON( where, 'the capture settings section (CAPT)', bytes, cpt.offset, cpt.length ) ) : {};
+	let gradients: Float32Array | null = null;
+	if ( grd ) {
 
-		const text = readString( where, 'capture settings', bytes, cpt.offset, cpt.length );
-		let parsed: unknown;
-		try {
-
-			parsed = JSON.parse( text );
-
-		} catch ( error ) {
-
-			fail( 'json', where, `the capture settings are not valid JSON (${( error as Error ).message}).` );
-
-		}
-
-		capture = checkCapture( where, parsed );
+		gradients = readFloats( where, 'gradients', view, grd.offset, GRADIENT_FLOATS * probeCount, half );
+		checkGradients( where, gradients );
 
 	}
 
+	const fit = fts ? checkFit( where, readJSON( where, 'the fit record section (FITS)', bytes, fts.offset, fts.length ), gradients !== null ) : null;
 	const metadata = mta ? readString( where, 'metadata', bytes, mta.offset, mta.length ) : '';
-	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients: null, fit: null };
+	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients, fit };
 
 }

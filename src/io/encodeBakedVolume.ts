@@ -1,7 +1,7 @@
 import { crc32 } from './crc32.js';
 import { toFloat16Bits, FLOAT16_MAX } from './float16.js';
 import {
-	align8, BAKED_ROLES, BAKED_SECTION, BAKED_VOLUME_MAGIC, BAKED_VOLUME_VERSION_MAJOR, BAKED_VOLUME_VERSION_MINOR,
+	align8, BAKED_ROLES, BAKED_SECTION, BAKED_VOLUME_MAGIC, BAKED_VOLUME_VERSION_MAJOR, bakedVolumeMinorVersion,
 	ENTRY_SIZE, FLAG_SH_FLOAT16, HEADER_SIZE, LITTLE_ENDIAN, SECTION_REQUIRED,
 } from './bakedVolumeFormat.js';
 import { fail } from './checks.js';
@@ -11,10 +11,11 @@ import type { BakedVolumeInput, EncodeBakedVolumeOptions } from './bakedVolumeTy
 const utf8Encoder = new TextEncoder();
 
 /**
- * Writes a volume in the binary format of docs/format.md (version 1.0, little-endian).
- * Validates the input first (same rules as the reader), so a written file always loads.
- * @throws {BakedVolumeError} on invalid input, on an SH value beyond ±65504 with `'float16'`
- * (code `'float16-overflow'`), or when the file would exceed 4 GiB.
+ * Writes a volume in the binary format of docs/format.md (little-endian; version 1.1 when it holds
+ * gradients or a fit record, else 1.0). Validates the input first (same rules as the reader), so a
+ * written file always loads.
+ * @throws {BakedVolumeError} on invalid input, on an SH or gradient value beyond ±65504 with
+ * `'float16'` (code `'float16-overflow'`), or when the file would exceed 4 GiB.
  */
 export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBakedVolumeOptions = {} ): ArrayBuffer {
 
@@ -26,26 +27,10 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 	const probeCount = data.positions.length / 3;
 	const tetCount = data.tetrahedra.length / 4;
 
-	// Section payloads that are not plain typed arrays.
-	let shBytes: Uint8Array;
-	if ( precision === 'float16' ) {
-
-		const half = new Uint16Array( data.sh.length );
-		for ( let i = 0; i < half.length; i ++ ) {
-
-			const h = toFloat16Bits( data.sh[ i ] );
-			if ( h < 0 ) fail( 'float16-overflow', where, `sh[${i}] = ${data.sh[ i ]} is beyond the float16 range (±${FLOAT16_MAX}); use { precision: 'float32' }.` );
-			half[ i ] = h;
-
-		}
-
-		shBytes = new Uint8Array( half.buffer );
-
-	} else {
-
-		shBytes = new Uint8Array( data.sh.buffer, data.sh.byteOffset, data.sh.byteLength );
-
-	}
+	// SH and gradients in the file's precision: float32 as they are, float16 converted (header flag bit 0).
+	const sh = precision === 'float16' ? toFloat16( where, 'sh', data.sh ) : data.sh;
+	const gradients = data.gradients && precision === 'float16' ? toFloat16( where, 'gradients', data.gradients ) : data.gradients;
+	const fitText = data.fit ? utf8Encoder.encode( JSON.stringify( data.fit ) ) : null;
 
 	const roleBytes = new Uint8Array( probeCount );
 	for ( let i = 0; i < probeCount; i ++ ) roleBytes[ i ] = BAKED_ROLES.indexOf( data.roles[ i ] );
@@ -58,18 +43,13 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 
 	type Section = { id: number; required: boolean; length: number; write: ( view: DataView, bytes: Uint8Array, at: number ) => void };
 	const sections: Section[] = [];
-	const typed = ( id: number, array: ArrayBufferView ): Section => ( {
-		id, required: true, length: array.byteLength,
+	const typed = ( id: number, array: ArrayBufferView, required = true ): Section => ( {
+		id, required, length: array.byteLength,
 		write: ( view, bytes, at ) => writeLE( view, bytes, at, array ),
 	} );
 
 	sections.push( typed( BAKED_SECTION.POSITIONS, data.positions ) );
-	sections.push( { id: BAKED_SECTION.SH, required: true, length: shBytes.length, write: ( view, bytes, at ) => {
-
-		if ( precision === 'float32' ) writeLE( view, bytes, at, data.sh );
-		else writeLE( view, bytes, at, new Uint16Array( shBytes.buffer ) );
-
-	} } );
+	sections.push( typed( BAKED_SECTION.SH, sh ) );
 	if ( tetCount > 0 ) {
 
 		sections.push( typed( BAKED_SECTION.TETRAHEDRA, data.tetrahedra ) );
@@ -133,6 +113,9 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 	sections.push( typed( BAKED_SECTION.BOUNDS, data.bounds ) );
 	if ( captureText ) sections.push( blob( BAKED_SECTION.CAPTURE, false, captureText ) );
 	if ( metadataText ) sections.push( blob( BAKED_SECTION.METADATA, false, metadataText ) );
+	// Optional (1.1): a 1.0 reader skips them and lights with the SH alone.
+	if ( gradients ) sections.push( typed( BAKED_SECTION.GRADIENTS, gradients, false ) );
+	if ( fitText ) sections.push( blob( BAKED_SECTION.FIT, false, fitText ) );
 
 	let offset = align8( HEADER_SIZE + ENTRY_SIZE * sections.length );
 	const offsets = sections.map( ( section ) => {
@@ -150,7 +133,7 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 	const bytes = new Uint8Array( buffer );
 	bytes.set( BAKED_VOLUME_MAGIC, 0 );
 	view.setUint16( 8, BAKED_VOLUME_VERSION_MAJOR, true );
-	view.setUint16( 10, BAKED_VOLUME_VERSION_MINOR, true );
+	view.setUint16( 10, bakedVolumeMinorVersion( data ), true );
 	view.setUint32( 16, fileLength, true );
 	view.setUint32( 20, HEADER_SIZE, true );
 	view.setUint32( 24, precision === 'float16' ? FLAG_SH_FLOAT16 : 0, true );
@@ -171,6 +154,22 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 	} );
 	view.setUint32( 12, crc32( bytes, 16, fileLength ), true );
 	return buffer;
+
+}
+
+/** Float16 bits of every value ('float16-overflow' naming `name` and the index for a value beyond ±65504). */
+function toFloat16( where: string, name: string, values: Float32Array ): Uint16Array {
+
+	const half = new Uint16Array( values.length );
+	for ( let i = 0; i < half.length; i ++ ) {
+
+		const h = toFloat16Bits( values[ i ] );
+		if ( h < 0 ) fail( 'float16-overflow', where, `${name}[${i}] = ${values[ i ]} is beyond the float16 range (±${FLOAT16_MAX}); use { precision: 'float32' }.` );
+		half[ i ] = h;
+
+	}
+
+	return half;
 
 }
 

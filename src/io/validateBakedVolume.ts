@@ -1,7 +1,9 @@
 import { checkProbeNames, checkProbeRoles, checkZoneName, checkZoneProbes } from '../roles.js';
 import {
-	boxOf, checkBox, checkCapture, checkFinite, checkPositions, checkSH, checkTetrahedralization, checkText, codecReject, fail, numbers,
+	boxOf, checkBox, checkCapture, checkFinite, checkFit, checkGradients, checkPositions, checkSH, checkTetrahedralization, checkText,
+	codecReject, fail, numbers,
 } from './checks.js';
+import { GRADIENT_FLOATS } from './bakedVolumeFormat.js';
 import type { BakedVolumeData, BakedVolumeInput, BakedZone } from './bakedVolumeTypes.js';
 
 /**
@@ -12,7 +14,7 @@ import type { BakedVolumeData, BakedVolumeInput, BakedZone } from './bakedVolume
  */
 export function validateBakedVolume( input: BakedVolumeInput, where = 'validateBakedVolume' ): BakedVolumeData {
 
-	if ( input === null || typeof input !== 'object' ) fail( 'argument', where, 'expected a volume { positions, sh, tetrahedra?, neighbors?, names?, roles?, zones?, bounds?, capture?, metadata? }.' );
+	if ( input === null || typeof input !== 'object' ) fail( 'argument', where, 'expected a volume { positions, sh, tetrahedra?, neighbors?, names?, roles?, zones?, bounds?, capture?, metadata?, gradients?, fit? }.' );
 	const positionsIn = numbers( where, 'positions', input.positions, 3 );
 	const probeCount = positionsIn.length / 3;
 	if ( probeCount < 1 ) fail( 'count', where, 'positions holds no probe.' );
@@ -78,6 +80,22 @@ export function validateBakedVolume( input: BakedVolumeInput, where = 'validateB
 	if ( typeof metadata !== 'string' ) fail( 'argument', where, 'metadata must be a string.' );
 	checkText( where, 'metadata', metadata );
 
-	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients: null, fit: null };
+	let gradients: Float32Array | null = null;
+	if ( input.gradients !== undefined && input.gradients !== null ) {
+
+		const g = numbers( where, 'gradients', input.gradients, GRADIENT_FLOATS );
+		if ( g.length !== GRADIENT_FLOATS * probeCount ) {
+
+			fail( 'count', where, `gradients has ${g.length} values; ${probeCount} probes need ${GRADIENT_FLOATS} each (${GRADIENT_FLOATS * probeCount}).` );
+
+		}
+
+		checkGradients( where, g );
+		gradients = g instanceof Float32Array ? g : Float32Array.from( g );
+
+	}
+
+	const fit = checkFit( where, input.fit, gradients !== null );
+	return { positions, sh, tetrahedra, neighbors, names, roles, zones, bounds, capture, metadata, gradients, fit };
 
 }

@@ -2,34 +2,14 @@ import { describe, expect, it } from 'vitest';
 import {
 	encodeBakedVolume, decodeBakedVolume, bakedVolumeToJSON, bakedVolumeFromJSON, validateBakedVolume,
 	type BakedVolumeData, type BakedVolumeInput,
-	BakedVolumeError, type BakedVolumeErrorCode,
 } from '../../src/io/index.js';
 import { fromFloat16Bits } from '../../src/io/float16.js';
 import { readFileSync } from 'node:fs';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { gridPoints } from '../helpers/pointSets.js';
-import { makeVolume, independentCheck, fixChecksum, readSections, writeSections, fourCC, referenceCRC32 } from './helpers.js';
-
-function expectError( code: BakedVolumeErrorCode, run: () => unknown, message?: RegExp ): BakedVolumeError {
-
-	let caught: unknown = null;
-	try {
-
-		run();
-
-	} catch ( error ) {
-
-		caught = error;
-
-	}
-
-	expect( caught, `expected a BakedVolumeError '${code}'` ).toBeInstanceOf( BakedVolumeError );
-	const error = caught as BakedVolumeError;
-	expect( error.code, error.message ).toBe( code );
-	if ( message ) expect( error.message ).toMatch( message );
-	return error;
-
-}
+import {
+	makeVolume, independentCheck, readSections, writeSections, fourCC, referenceCRC32, expectError, edited, sectionOffset,
+} from './helpers.js';
 
 function expectSame( d: BakedVolumeData, input: BakedVolumeInput ): void {
 
@@ -43,25 +23,6 @@ function expectSame( d: BakedVolumeData, input: BakedVolumeInput ): void {
 	expect( Array.from( d.bounds ) ).toEqual( Array.from( input.bounds ?? d.bounds ) );
 	expect( d.capture ).toEqual( input.capture ?? {} );
 	expect( d.metadata ).toEqual( input.metadata ?? '' );
-
-}
-
-/** Edits a valid file: `edit` gets a DataView over a copy; the checksum is then made valid again. */
-function edited( buffer: ArrayBuffer, edit: ( view: DataView, bytes: Uint8Array ) => void ): ArrayBuffer {
-
-	const copy = buffer.slice( 0 );
-	edit( new DataView( copy ), new Uint8Array( copy ) );
-	fixChecksum( new Uint8Array( copy ) );
-	return copy;
-
-}
-
-/** Byte offset of a section's data in a valid file. */
-function sectionOffset( buffer: ArrayBuffer, id: string ): number {
-
-	const view = new DataView( buffer );
-	for ( let s = 0; s < view.getUint32( 40, true ); s ++ ) if ( view.getUint32( 64 + 16 * s, true ) === fourCC( id ) ) return view.getUint32( 64 + 16 * s + 8, true );
-	throw new Error( `no section ${id}` );
 
 }
 

@@ -1,11 +1,13 @@
 import { orient3d } from 'robust-predicates';
+import { expect } from 'vitest';
 import { tetrahedralize } from '../../src/tetrahedra/tetrahedralize.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
-import type { BakedVolumeData, BakedVolumeInput } from '../../src/io/index.js';
+import { BakedVolumeError, type BakedVolumeData, type BakedVolumeErrorCode, type BakedVolumeInput } from '../../src/io/index.js';
 
 /*
  * Test-side helpers written from docs/format.md, not from the codec: a bitwise CRC-32, a section
- * table reader and writer, and a brute-force validity check of decoded data.
+ * table reader and writer, and a brute-force validity check of decoded data; and the expectations
+ * the codec tests share.
  */
 
 /** Bit-at-a-time CRC-32 (IEEE), the textbook definition. */
@@ -207,5 +209,46 @@ export function independentCheck( d: BakedVolumeData ): string | null {
 	}
 
 	return null;
+
+}
+
+/** Runs `run`, expects a BakedVolumeError of `code` (and a message matching `message`), and returns it. */
+export function expectError( code: BakedVolumeErrorCode, run: () => unknown, message?: RegExp ): BakedVolumeError {
+
+	let caught: unknown = null;
+	try {
+
+		run();
+
+	} catch ( error ) {
+
+		caught = error;
+
+	}
+
+	expect( caught, `expected a BakedVolumeError '${code}'` ).toBeInstanceOf( BakedVolumeError );
+	const error = caught as BakedVolumeError;
+	expect( error.code, error.message ).toBe( code );
+	if ( message ) expect( error.message ).toMatch( message );
+	return error;
+
+}
+
+/** Edits a valid file: `edit` gets a DataView over a copy; the checksum is then made valid again. */
+export function edited( buffer: ArrayBuffer, edit: ( view: DataView, bytes: Uint8Array ) => void ): ArrayBuffer {
+
+	const copy = buffer.slice( 0 );
+	edit( new DataView( copy ), new Uint8Array( copy ) );
+	fixChecksum( new Uint8Array( copy ) );
+	return copy;
+
+}
+
+/** Byte offset of a section's data in a valid file. */
+export function sectionOffset( buffer: ArrayBuffer, id: string ): number {
+
+	const view = new DataView( buffer );
+	for ( let s = 0; s < view.getUint32( 40, true ); s ++ ) if ( view.getUint32( 64 + 16 * s, true ) === fourCC( id ) ) return view.getUint32( 64 + 16 * s + 8, true );
+	throw new Error( `no section ${id}` );
 
 }
