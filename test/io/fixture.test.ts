@@ -78,6 +78,8 @@ describe( 'stored version-1.0 file (test/io/fixtures/v1.0-tiny.lpv)', () => {
 		expect( Array.from( data.bounds ) ).toEqual( [ 0, 0, 0, 2, 2, 2 ] );
 		expect( data.capture ).toEqual( { resolution: 16, near: 0.05, far: 50, roles: { sky: { far: 500 } } } );
 		expect( data.metadata ).toBe( 'v1.0-tiny fixture' );
+		// Version 1.0 has no GRAD or FITS: plain probes, SH as captured.
+		expect( [ data.gradients, data.fit ] ).toEqual( [ null, null ] );
 
 		expect( data.sh.length ).toBe( 135 );
 		expect( Array.from( data.sh.subarray( 0, 9 ) ) ).toEqual( [
@@ -106,6 +108,84 @@ describe( 'stored version-1.0 file (test/io/fixtures/v1.0-tiny.lpv)', () => {
 		expect( encoded.length ).toBe( stored.length );
 		const first = encoded.findIndex( ( b, i ) => b !== stored[ i ] );
 		expect( first, 'first differing byte' ).toBe( - 1 );
+
+	} );
+
+} );
+
+/*
+ * A stored version-1.1 file with gradient probes and a fit record. fixtures/v1.1-gradients-tiny.lpv
+ * was generated once (issue 14) by encodeBakedVolume( INPUT_1_1, { precision: 'float16' } ) with
+ * INPUT_1_1 as below; the gradients are multiples of 1/64 in [−0.75, 0.75], exact in float16, so the
+ * decoded values are the input itself. Never regenerate it. The reader of version 1.0 (commit
+ * 83c1299) loads it, skipping GRAD and FITS, with the same positions and SH.
+ */
+
+const FIXTURE_1_1 = new URL( './fixtures/v1.1-gradients-tiny.lpv', import.meta.url );
+
+const GRADIENTS_INPUT = Array.from( { length: 5 * 81 }, ( _, i ) => ( ( i * 53 ) % 97 ) / 64 - 0.75 );
+
+const FIT_INPUT = {
+	samples: 64, gradients: true, lambda: 0.25, gradientLambda: 0.0625, crossValidationError: 0.0712, source: 'dense captures at spacing 0.5',
+};
+
+const INPUT_1_1: BakedVolumeInput = {
+	positions: INPUT.positions, sh: SH_INPUT, tetrahedra: INPUT.tetrahedra, neighbors: INPUT.neighbors, roles: INPUT.roles,
+	capture: { resolution: 16 }, metadata: 'v1.1-gradients-tiny fixture', gradients: GRADIENTS_INPUT, fit: FIT_INPUT,
+};
+
+describe( 'stored version-1.1 file with gradients and a fit record (test/io/fixtures/v1.1-gradients-tiny.lpv)', () => {
+
+	const bytes = (): Uint8Array => {
+
+		const file = readFileSync( FIXTURE_1_1 );
+		return new Uint8Array( file.buffer, file.byteOffset, file.byteLength );
+
+	};
+
+	it( 'has version 1.1, the SH-float16 flag and GRAD (162 bytes per probe) and FITS as optional sections', () => {
+
+		const b = bytes();
+		const view = new DataView( b.buffer, b.byteOffset, b.byteLength );
+		const header = [ 8, 10 ].map( ( at ) => view.getUint16( at, true ) )
+			.concat( [ 12, 16, 20, 24, 28, 32, 36, 40, 44 ].map( ( at ) => view.getUint32( at, true ) ) );
+		// major, minor, CRC-32, file length, header size, flags (SH and gradients float16), probes, tetrahedra, zones, sections, name bytes
+		expect( header ).toEqual( [ 1, 1, 0xE59B0038, 1784, 64, 1, 5, 3, 0, 10, 0 ] );
+		const table: [ string, number, number, number ][] = [];
+		for ( let s = 0; s < 10; s ++ ) {
+
+			const at = 64 + 16 * s;
+			const id = String.fromCharCode( ...b.subarray( at, at + 4 ) );
+			table.push( [ id, view.getUint32( at + 4, true ), view.getUint32( at + 8, true ), view.getUint32( at + 12, true ) ] );
+
+		}
+
+		expect( table ).toEqual( [
+			[ 'POS ', 1, 224, 120 ], [ 'SH  ', 1, 344, 270 ], [ 'TETS', 1, 616, 48 ], [ 'NBRS', 1, 664, 48 ], [ 'ROLE', 1, 712, 5 ],
+			[ 'BNDS', 1, 720, 48 ], [ 'CAPT', 0, 768, 17 ], [ 'META', 0, 792, 27 ], [ 'GRAD', 0, 824, 810 ], [ 'FITS', 0, 1640, 140 ],
+		] );
+		// Gradient 81·4 + 27·2 + 5 (probe 4, ∂/∂z of SH float 5) as float16 bits: (383·53) % 97 = 26 → 26/64 − 0.75 = −0.34375 = 0xB580.
+		expect( view.getUint16( 824 + 2 * 383, true ) ).toBe( 0xB580 );
+		expect( JSON.parse( new TextDecoder().decode( b.subarray( 1640, 1780 ) ) ) ).toEqual( FIT_INPUT );
+
+	} );
+
+	it( 'decodes to the literal gradients and fit record, with the SH of the 1.0 fixture', () => {
+
+		const data = decodeBakedVolume( bytes() );
+		expect( Array.from( data.gradients! ) ).toEqual( GRADIENTS_INPUT );
+		expect( data.fit ).toEqual( FIT_INPUT );
+		expect( Array.from( data.sh ) ).toEqual( Array.from( decodeBakedVolume( fixture() ).sh ) );
+		expect( data.metadata ).toBe( 'v1.1-gradients-tiny fixture' );
+
+	} );
+
+	it( 'encoding the literal input gives the stored bytes exactly', () => {
+
+		const encoded = new Uint8Array( encodeBakedVolume( INPUT_1_1, { precision: 'float16' } ) );
+		const stored = bytes();
+		expect( encoded.length ).toBe( stored.length );
+		expect( encoded.findIndex( ( b, i ) => b !== stored[ i ] ), 'first differing byte' ).toBe( - 1 );
 
 	} );
 
