@@ -8,6 +8,7 @@ import {
 import { BakedVolumeError, decodeBakedVolume, type BakedVolumeInput } from '../../src/io/index.js';
 import { makeVolume, independentCheck } from './helpers.js';
 import { installGLTFNodeStubs } from './gltfNodeStubs.js';
+import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
 
 beforeAll( installGLTFNodeStubs );
 
@@ -76,6 +77,33 @@ describe( 'glTF extension ' + GLTF_LIGHT_PROBE_VOLUME_EXTENSION, () => {
 		const gltf = await load( await exportGLB( [ { name: 'hall', data: a } ], 'float16' ) );
 		const sh = ( gltf.userData.lightProbeVolumes as GLTFLightProbeVolumeEntry[] )[ 0 ].data.sh;
 		for ( let i = 0; i < sh.length; i ++ ) expect( Math.abs( sh[ i ] - a.sh[ i ] ) ).toBeLessThanOrEqual( Math.max( Math.abs( a.sh[ i ] ) * 2 ** - 11, 2 ** - 25 ) );
+
+	} );
+
+	it( 'gradient probes and the fit record inside a .glb: float32 bitwise, float16 within half precision; a plain volume beside them stays plain', async () => {
+
+		const random = mulberry32( 31 );
+		const gradients = Float32Array.from( { length: 81 * 30 }, () => 6 * random() - 3 );
+		const fit = { samples: 200, gradients: true, lambda: 0.5, gradientLambda: 0.125, crossValidationError: 0.06, source: 'test' };
+		for ( const precision of [ 'float32', 'float16' ] as const ) {
+
+			const gltf = await load( await exportGLB( [ { name: 'hall', data: { ...a, gradients, fit } }, { name: 'b', data: b } ], precision ) );
+			const [ hall, plain ] = gltf.userData.lightProbeVolumes as GLTFLightProbeVolumeEntry[];
+			expect( hall.data.fit ).toEqual( fit );
+			expect( [ plain.data.gradients, plain.data.fit ] ).toEqual( [ null, null ] );
+			const read = hall.data.gradients!;
+			expect( read ).toHaveLength( gradients.length );
+			if ( precision === 'float32' ) expect( Array.from( read ) ).toEqual( Array.from( gradients ) );
+			// The float16 bound of docs/format.md ("SH precision"): relative 2^−11, absolute 2^−25 near 0.
+			for ( let i = 0; i < read.length; i ++ ) {
+
+				const bound = Math.max( Math.abs( gradients[ i ] ) * 2 ** - 11, 2 ** - 25 );
+				expect( Math.abs( read[ i ] - gradients[ i ] ), `gradients[${i}], ${precision}` ).toBeLessThanOrEqual( bound );
+
+			}
+
+
+		}
 
 	} );
 
