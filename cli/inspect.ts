@@ -2,6 +2,7 @@ import { existsSync, readFileSync, statSync } from 'node:fs';
 import { bakeWarnings } from './bakeWarnings.js';
 import { readVolume, type ReadVolume } from './codec.js';
 import { CliError } from './errors.js';
+import type { BakedFit } from '../src/io/index.js';
 import { layoutShape } from './layoutShape.js';
 import { formatShStatistics, shStatistics } from './shStatistics.js';
 import { formatBytes, formatTable } from './table.js';
@@ -99,10 +100,28 @@ export function summaryRows( file: string, size: number, { data, format, precisi
 		[ 'SH precision', precision === 'json' ? 'JSON decimal (float32 values)' : precision ],
 		[ 'bounds', `(${number( b[ 0 ] )}, ${number( b[ 1 ] )}, ${number( b[ 2 ] )}) – (${number( b[ 3 ] )}, ${number( b[ 4 ] )}, ${number( b[ 5 ] )})` ],
 		[ 'capture', capture.join( ', ' ) || 'unknown' ],
+		[ 'gradients', data.gradients ? `stored (81 per probe, ${precision === 'json' ? 'JSON decimal' : precision})` : 'none (plain probes)' ],
+		[ 'fit', fitRow( data.fit ) ],
 	];
 	if ( data.metadata ) rows.push( [ 'metadata', data.metadata.length > 200 ? data.metadata.slice( 0, 200 ) + '…' : data.metadata ] );
 	rows.push( [ 'size on disk', formatBytes( size ) ] );
 	return rows;
+
+}
+
+/** How the SH were fitted, from the file's fit record. */
+function fitRow( fit: BakedFit | null ): string {
+
+	if ( ! fit ) return 'none (the SH are the captured ones)';
+	const number = ( v: number ) => String( Number( v.toPrecision( 4 ) ) );
+	const parts = [
+		`least squares to ${fit.samples} samples, ${fit.gradients ? 'SH and gradients' : 'SH only'}`,
+		`λ ${number( fit.lambda )}${fit.gradients ? `, gradient λ ${number( fit.gradientLambda )}` : ''}`,
+		fit.crossValidationError === null ? 'λ given (no cross-validation)'
+			: `cross-validation error ${number( 100 * fit.crossValidationError )} % of the mean irradiance`,
+	];
+	if ( fit.source ) parts.push( `samples: ${fit.source.length > 200 ? fit.source.slice( 0, 200 ) + '…' : fit.source}` );
+	return parts.join( '; ' );
 
 }
 
