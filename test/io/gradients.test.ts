@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
 import {
 	bakedVolumeFromJSON, bakedVolumeToJSON, decodeBakedVolume, encodeBakedVolume, validateBakedVolume, type BakedFit, type BakedVolumeInput,
 } from '../../src/io/index.js';
@@ -240,6 +241,18 @@ describe( 'baked format 1.1: malformed gradients and fit records, by name', () =
 		expectError( 'nan', () => bakedVolumeFromJSON( { ...json, gradients: json.gradients!.map( ( v, i ) => i === 9 ? null as unknown as number : v ) } ), /gradients\[9\] is null/ );
 		expectError( 'count', () => bakedVolumeFromJSON( { ...json, gradients: json.gradients!.slice( 0, 81 ) } ), /gradients has 81 values/ );
 		expectError( 'range', () => bakedVolumeFromJSON( { ...json, fit: { ...FIT, samples: - 1 } } ), /fit\.samples is -1/ );
+
+	} );
+
+} );
+
+describe( 'baked format 1.1: docs/format.md', () => {
+
+	it( 'the FITS example of docs/format.md is a valid fit record that round-trips', () => {
+
+		const doc = readFileSync( new URL( '../../docs/format.md', import.meta.url ), 'utf8' );
+		const example = JSON.parse( /\*\*FITS\*\* JSON[\s\S]*?```json\n([\s\S]*?)```/.exec( doc )![ 1 ] );
+		expect( decodeBakedVolume( encodeBakedVolume( { ...volume, fit: example } ) ).fit ).toEqual( example );
 
 	} );
 
