@@ -1,18 +1,16 @@
 import type { Object3D, Scene, Vector3, WebGLRenderer } from 'three';
-import { boundsOf } from '../geometry/boundsOf.js';
-import { assertRenderer, assertScene } from '../capture/captureSettings.js';
-import { blendSH } from '../interpolation/blendSH.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import type { BakedCapture, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
-import { readProbeNames, readProbeRoles, type ProbeRole } from '../roles.js';
-import { SH_FLOATS, assertOptions, assertProbePositions, assertProbeSH } from '../validate.js';
+import type { BakedCapture, BakedFit, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
+import type { ProbeRole } from '../roles.js';
+import { SH_FLOATS, assertOptions } from '../validate.js';
 import {
 	assertBakedVolumeParameters, checkBakedData, parametersFromBakedData, toBakedVolumeInput, type BakedVolumeParameters,
 } from './bakedVolumeData.js';
 import { captureVolume } from './captureBounces.js';
 import { CAPTURE_ACCESS, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
-import { createVolumeInterpolator } from './createVolumeInterpolator.js';
+import { blendProbes } from './gradientBlend.js';
+import { readGradients } from './gradientProbes.js';
 import type {
 	AddOptions, AddProbeOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters, ProbeLighting, ProbeOccluders, ProbePosition,
 	SampleOptions,
@@ -21,9 +19,9 @@ import { assertObject3D } from './litObjects.js';
 import { LitObjectRegistry } from './LitObjectRegistry.js';
 import { ProbeEdits } from './ProbeEdits.js';
 import { medianProbeSpacing } from './probeSpacing.js';
-import { ProbeWeighting, assertInterpolator, invalidateVisibility } from './ProbeWeighting.js';
+import { ProbeWeighting, defaultMoveThreshold, invalidateVisibility } from './ProbeWeighting.js';
 import { ProbeZones, zoneIndexOf } from './ProbeZones.js';
-import { assertSHTarget, readPosition } from './volumeArguments.js';
+import { assertRecaptureArguments, assertSHTarget, readPosition, readVolumeParameters } from './volumeArguments.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
 import type { ProbeVolumeUniforms } from './patchMaterial.js';
 
@@ -78,6 +76,18 @@ export class LightProbeVolume {
 	 */
 	sh: Float32Array;
 
+	/**
+	 * Gradient probes: 81 floats per probe, `gradients[ 81·i + 27·a + k ]` = ∂(SH float k)/∂(axis a) at probe i, and
+	 * every blend (objects, vertices, texels, {@link LightProbeVolume.sample}) is Σ wᵢ · (cᵢ + Gᵢ · (q − pᵢ)) at its
+	 * point q; null (default) for plain probes. Set it with {@link LightProbeVolume.setGradients}; values written in
+	 * place are noticed like `sh`'s. Edits keep it in step (a moved or added probe's gradient is zero, a removed one's
+	 * too) and replace it when adding a probe; a capture leaves it as it is.
+	 */
+	gradients: Float32Array | null;
+
+	/** How the SH (and gradients) were fitted to extra captured points, stored in baked files; null when not fitted. */
+	fitSettings: BakedFit | null = null;
+
 	/** Name per probe ('' when none was given); `addProbe` appends. */
 	readonly names: string[];
 
@@ -114,32 +124,15 @@ export class LightProbeVolume {
 	 */
 	constructor( parameters: LightProbeVolumeParameters ) {
 
-		if ( ! parameters || typeof parameters !== 'object' ) {
-
-			throw new TypeError( 'LightProbeVolume: expected { positions, sh?, names?, roles? }.' );
-
-		}
-
-		const count = assertProbePositions( 'LightProbeVolume', 'positions', parameters.positions, 1 );
-		this.positions = Float64Array.from( parameters.positions );
-		this.sh = new Float32Array( SH_FLOATS * count );
-		if ( parameters.sh !== undefined ) {
-
-			assertProbeSH( 'LightProbeVolume', 'sh', parameters.sh, count );
-			this.sh.set( parameters.sh );
-
-		}
-
-		this.names = readProbeNames( 'LightProbeVolume', parameters.names, count );
-		this.roles = readProbeRoles( 'LightProbeVolume', parameters.roles, count );
-		assertOptions( 'LightProbeVolume', 'guard', parameters.guard );
-		this.interpolator = parameters.interpolator !== undefined
-			? assertInterpolator( 'LightProbeVolume', parameters.interpolator, count )
-			: createVolumeInterpolator( this.positions );
+		const { positions, sh, gradients, names, roles, interpolator } = readVolumeParameters( 'LightProbeVolume', parameters );
+		this.positions = positions;
+		this.sh = sh;
+		this.gradients = gradients;
+		this.names = names;
+		this.roles = roles;
+		this.interpolator = interpolator;
 		this.zones = parameters.zones !== undefined ? new ProbeZones( parameters.zones, this.positions ) : null;
-		// 1 % of the probes' bounding-box diagonal: the default re-test distance of the guard.
-		const box = boundsOf( this.positions );
-		this.weighting = new ProbeWeighting( this, 0.01 * Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] ) );
+		this.weighting = new ProbeWeighting( this, defaultMoveThreshold( positions ) );
 		this.objects = new LitObjectRegistry( this, this.weighting );
 		this.edits = new ProbeEdits( this, this.objects.lit );
 		if ( parameters.occluders !== undefined ) this.setOccluders( parameters.occluders, parameters.guard );
@@ -267,15 +260,7 @@ export class LightProbeVolume {
 	): Promise<this> {
 
 		const where = 'LightProbeVolume.recaptureDirty';
-		assertRenderer( where, renderer );
-		assertScene( where, scene );
-		assertOptions( where, 'options', options );
-		if ( options !== undefined && ( options as LightProbeVolumeCaptureOptions ).indices !== undefined ) {
-
-			throw new TypeError( `${where}: options.indices is not taken (the dirty probes are captured); use capture().` );
-
-		}
-
+		assertRecaptureArguments( where, renderer, scene, options );
 		const indices = this.dirtyProbes();
 		if ( indices.length > 0 ) await captureVolume( where, this, renderer, scene, { ...options, indices } );
 		return this;
@@ -350,6 +335,23 @@ export class LightProbeVolume {
 	}
 
 	/**
+	 * Makes the probes gradient probes (see {@link LightProbeVolume.gradients}) or, with null, plain ones again. The
+	 * values are copied into a new array; a removed probe's gradient is kept at zero. All or nothing.
+	 * @param gradients 81 × `count` finite numbers, each |value| ≤ 1e30 / the probes' bounding-box diagonal (so the
+	 * gradient term across the layout stays within the SH limit); or null.
+	 * @throws TypeError / RangeError for another length, a non-number, NaN or a value beyond the bound.
+	 */
+	setGradients( gradients: ArrayLike<number> | null ): this {
+
+		const where = 'LightProbeVolume.setGradients';
+		const next = gradients === null ? null : readGradients( where, 'gradients', gradients, this.positions, this.count );
+		this.gradients = this.edits.adoptGradients( next );
+		this.objects.probesChanged();
+		return this;
+
+	}
+
+	/**
 	 * Everything a baked file holds: positions, SH, the tetrahedralization (when the interpolator
 	 * is a {@link TetrahedralMesh}, so loading needs no re-tetrahedralization), names, roles, zones,
 	 * bounds, capture settings and metadata. The arrays are the volume's own, not copies — except
@@ -374,13 +376,15 @@ export class LightProbeVolume {
 		const volume = new LightProbeVolume( { ...parameters, ...parametersFromBakedData( data ) } );
 		volume.captureSettings = data.capture;
 		volume.metadata = data.metadata;
+		volume.fitSettings = data.fit ?? null;
 		return volume;
 
 	}
 
 	/**
 	 * Writes the interpolated SH (27 floats) at a world position into `target` and returns it,
-	 * with the same zone and visibility logic as a registered object (tested afresh, no cache).
+	 * with the same zone and visibility logic as a registered object (tested afresh, no cache),
+	 * and the gradient formula at that position for gradient probes.
 	 * @param position `{ x, y, z }` (e.g. a `Vector3`) or `[ x, y, z ]`.
 	 * @param options `zone`: sample this zone by name instead of the one whose bounds contain the position.
 	 */
@@ -393,9 +397,9 @@ export class LightProbeVolume {
 		const zone = options.zone !== undefined
 			? zoneIndexOf( where, this.zones, options.zone )
 			: ( this.zones ? this.zones.zoneAt( x, y, z ) : - 1 );
-		const weighting = this.weighting;
-		weighting.weigh( x, y, z, zone, - 1, null );
-		return blendSH( weighting.indices, weighting.weights, this.sh, target, weighting.count );
+		this.weighting.weigh( x, y, z, zone, - 1, null );
+		const { indices, weights, count } = this.weighting;
+		return blendProbes( indices, weights, count, this.sh, this.gradients, this.positions, x, y, z, target );
 
 	}
 
@@ -447,10 +451,7 @@ export class LightProbeVolume {
 	 */
 	getAnchor( object: Object3D, target: Vector3 ): Vector3 | null {
 
-		assertObject3D( 'LightProbeVolume.getAnchor', object );
-		const entry = this.objects.find( object );
-		if ( entry === undefined || entry.large !== null ) return null;
-		return target.set( entry.anchor[ 0 ], entry.anchor[ 1 ], entry.anchor[ 2 ] );
+		return this.objects.anchorOf( object, target );
 
 	}
 
@@ -460,9 +461,7 @@ export class LightProbeVolume {
 	 */
 	getZone( object: Object3D ): string | null {
 
-		assertObject3D( 'LightProbeVolume.getZone', object );
-		const zone = this.objects.find( object )?.zone ?? - 1;
-		return zone >= 0 && this.zones ? this.zones.zones[ zone ].name : null;
+		return this.objects.zoneOf( object );
 
 	}
 

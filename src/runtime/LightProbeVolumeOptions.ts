@@ -31,6 +31,13 @@ export interface LightProbeVolumeParameters {
 	 */
 	sh?: ArrayLike<number>;
 
+	/**
+	 * Gradient probes: 81 floats per probe, `gradients[ 81·i + 27·a + k ]` = ∂(SH float k)/∂(axis a), e.g. fitted with
+	 * `fitProbeSH`; each |value| ≤ 1e30 / the probes' bounding-box diagonal. Every blend is then
+	 * Σ wᵢ · (cᵢ + Gᵢ · (q − pᵢ)) at its point q (see `LightProbeVolume.gradients`). Default: none, plain probes.
+	 */
+	gradients?: ArrayLike<number>;
+
 	/** Optional name per probe: any strings UTF-8 can hold. */
 	names?: readonly string[];
 

@@ -1,6 +1,8 @@
-import type { Object3D } from 'three';
+import type { Object3D, Vector3 } from 'three';
 import { assertOptions } from '../validate.js';
 import { describeObject } from './chooseLighting.js';
+import { GRADIENT_FLOATS } from './gradientProbes.js';
+import { GradientTracker } from './gradientTracker.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import {
 	EXPLICIT_SCOPE, assertObject3D, checkAddOptions, createLitObject, disposeLitObject, reportBadBlend, updateLitObject,
@@ -15,6 +17,9 @@ export interface RegistryVolume extends ZonedProbes {
 
 	/** The typical probe distance, for `add( scene )`'s choice. */
 	readonly probeSpacing: number;
+
+	/** The gradients of gradient probes (81 per probe), or null. */
+	readonly gradients: Float32Array | null;
 
 }
 
@@ -34,6 +39,7 @@ export class LitObjectRegistry {
 	private version = 0;
 	private staticCount = 0;
 	private shCopy: Float32Array | null = null;
+	private readonly gradientTracker = new GradientTracker();
 
 	/**
 	 * @param volume The volume whose probes light the objects.
@@ -79,6 +85,26 @@ export class LitObjectRegistry {
 
 	}
 
+	/** `LightProbeVolume.getAnchor`: an object-mode entry's anchor (its local sampling point) into `target`, else null. */
+	anchorOf( object: Object3D, target: Vector3 ): Vector3 | null {
+
+		assertObject3D( 'LightProbeVolume.getAnchor', object );
+		const entry = this.find( object );
+		if ( entry === undefined || entry.large !== null ) return null;
+		return target.set( entry.anchor[ 0 ], entry.anchor[ 1 ], entry.anchor[ 2 ] );
+
+	}
+
+	/** `LightProbeVolume.getZone`: the name of the zone that lit an entry last, or null (the whole volume, not registered). */
+	zoneOf( object: Object3D ): string | null {
+
+		assertObject3D( 'LightProbeVolume.getZone', object );
+		const zone = this.find( object )?.zone ?? - 1;
+		const zones = this.volume.zones;
+		return zone >= 0 && zones ? zones.zones[ zone ].name : null;
+
+	}
+
 	/** `LightProbeVolume.getLighting`: how the object is lit — its own entry, or that of an ancestor covering it. */
 	lightingOf( object: Object3D ): ProbeLighting | null {
 
@@ -105,22 +131,36 @@ export class LitObjectRegistry {
 
 	/**
 	 * `LightProbeVolume.update`: every entry, static ones only when moved or the lighting version
-	 * changed (SH written directly are found by comparing with last frame's copy). Allocation-free
-	 * (except the SH copy's first use and after `addProbe` grew the SH).
+	 * changed (SH and gradients written directly are found by comparing with last frame's copies).
+	 * Allocation-free (except the copies' first use and after `addProbe` grew the SH).
 	 */
 	update( where: string ): void {
 
-		const lit = this.lit, weighting = this.weighting, zones = this.volume.zones, sh = this.volume.sh;
-		if ( this.staticCount > 0 && this.shChanged( sh ) ) this.version ++;
+		const volume = this.volume, lit = this.lit, weighting = this.weighting, zones = volume.zones, sh = volume.sh;
+		const gradients = volume.gradients, positions = volume.positions;
+		if ( gradients !== null && gradients.length !== GRADIENT_FLOATS * volume.count ) {
+
+			throw new RangeError( `${where}: gradients has length ${gradients.length}, expected 81 × ${volume.count} probes; use setGradients().` );
+
+		}
+
+		if ( this.staticCount > 0 ) {
+
+			// Both copies are brought up to date every frame: no short-circuit between them.
+			const shChanged = this.shChanged( sh );
+			if ( this.gradientTracker.changed( where, gradients, positions, 'gradients' ) || shChanged ) this.version ++;
+
+		}
+
 		const version = this.version;
 		let bad = - 1;
 		for ( let i = 0, n = lit.length; i < n; i ++ ) {
 
-			if ( ! updateLitObject( lit[ i ], weighting, zones, sh, version ) && bad < 0 ) bad = i;
+			if ( ! updateLitObject( lit[ i ], weighting, zones, sh, gradients, positions, version ) && bad < 0 ) bad = i;
 
 		}
 
-		if ( bad >= 0 ) reportBadBlend( where, lit[ bad ], sh );
+		if ( bad >= 0 ) reportBadBlend( where, lit[ bad ], sh, gradients );
 
 	}
 
@@ -218,7 +258,11 @@ export class LitObjectRegistry {
 		this.lit.push( entry );
 		if ( entry.static && this.staticCount ++ === 0 ) this.shCopy = Float32Array.from( this.volume.sh );
 		const volume = this.volume;
-		if ( entry.large === null || entry.static ) updateLitObject( entry, this.weighting, volume.zones, volume.sh, this.version );
+		if ( entry.large === null || entry.static ) {
+
+			updateLitObject( entry, this.weighting, volume.zones, volume.sh, volume.gradients, volume.positions, this.version );
+
+		}
 
 	}
 

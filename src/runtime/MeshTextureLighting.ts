@@ -97,8 +97,8 @@ export class MeshTextureLighting {
 	}
 
 	/**
-	 * Resamples when the mesh moved (new bounds), the field was replaced or its SH changed. Allocation-free when
-	 * nothing changed.
+	 * Resamples when the mesh moved (new bounds), the field was replaced or its SH or gradients changed.
+	 * Allocation-free when nothing changed.
 	 * @returns Whether it resampled.
 	 */
 	update(): boolean {

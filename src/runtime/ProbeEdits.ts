@@ -1,4 +1,3 @@
-import { blendSH } from '../interpolation/blendSH.js';
 import { IncrementalTetrahedralMesh } from '../interpolation/IncrementalTetrahedralMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
@@ -6,6 +5,8 @@ import { checkName, checkRole, runtimeReject, type ProbeRole } from '../roles.js
 import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
 import { SH_FLOATS, assertOptions, assertProbeSH } from '../validate.js';
 import type { CapturedProbes } from './captureProbes.js';
+import { blendProbes } from './gradientBlend.js';
+import { GRADIENT_FLOATS } from './gradientProbes.js';
 import type { AddProbeOptions, ProbePosition } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
 import { MAX_WEIGHTS, invalidateVisibility } from './ProbeWeighting.js';
@@ -17,6 +18,7 @@ export interface EditedVolume {
 
 	positions: Float64Array;
 	sh: Float32Array;
+	gradients: Float32Array | null;
 	interpolator: ProbeInterpolator;
 	readonly names: string[];
 	readonly roles: ProbeRole[];
@@ -32,9 +34,11 @@ const _sh = new Float32Array( SH_FLOATS );
 /**
  * Probe editing of a `LightProbeVolume` (`moveProbe`, `addProbe`, `removeProbe`): the first edit
  * turns its `TetrahedralMesh` into an {@link IncrementalTetrahedralMesh} (one full
- * tetrahedralization) updated locally from then on; added probes' SH go into a capacity-doubling
- * store; moved and added probes are remembered as dirty until captured. Edits replace the
- * volume's `positions` (and `sh` when adding) and keep its objects' walk hints in range.
+ * tetrahedralization) updated locally from then on; added probes' SH (and gradients) go into
+ * capacity-doubling stores; moved and added probes are remembered as dirty until captured. Edits
+ * replace the volume's `positions` (and `sh`, `gradients` when adding), keep its gradients in step
+ * (a moved, added or removed probe's gradient is zero: it is plain until refitted) and its objects'
+ * walk hints in range.
  */
 export class ProbeEdits {
 
@@ -45,6 +49,8 @@ export class ProbeEdits {
 	private readonly lit: readonly LitObject[];
 	/** Capacity-doubling store behind `sh` once a probe was added (null before). */
 	private shStore: Float32Array | null = null;
+	/** Capacity-doubling store behind `gradients` once a probe was added to a volume with gradients (null before). */
+	private gradientStore: Float32Array | null = null;
 
 	/**
 	 * @param volume The edited volume.
@@ -96,6 +102,24 @@ export class ProbeEdits {
 
 	}
 
+	/**
+	 * `LightProbeVolume.setGradients` once checked: the gradients to keep (null for plain probes), with removed probes'
+	 * gradients zeroed; the next added probe starts a new store from them.
+	 */
+	adoptGradients( gradients: Float32Array | null ): Float32Array | null {
+
+		this.gradientStore = null;
+		if ( gradients === null ) return null;
+		for ( let i = 0; i < this.volume.count; i ++ ) {
+
+			if ( ! this.isActive( i ) ) gradients.fill( 0, GRADIENT_FLOATS * i, GRADIENT_FLOATS * ( i + 1 ) );
+
+		}
+
+		return gradients;
+
+	}
+
 	/** `LightProbeVolume.moveProbe`. */
 	move( index: number, position: ProbePosition ): void {
 
@@ -104,6 +128,7 @@ export class ProbeEdits {
 		this.assertActive( where, index );
 		const mesh = this.editableMesh( where );
 		mesh.moveProbe( index, x, y, z );
+		this.zeroGradient( index );
 		this.afterEdit( mesh );
 		this.dirty.add( index );
 
@@ -123,9 +148,9 @@ export class ProbeEdits {
 		const mesh = this.editableMesh( where );
 		if ( sh === undefined ) {
 
-			// Before the probe exists, so it does not weigh itself (its SH is still zero).
+			// Before the probe exists, so it does not weigh itself (its SH is still zero); gradient probes by their formula.
 			mesh.interpolate( x, y, z, _indices, _weights, - 1 );
-			blendSH( _indices, _weights, volume.sh, _sh, mesh.weightCount );
+			blendProbes( _indices, _weights, mesh.weightCount, volume.sh, volume.gradients, volume.positions, x, y, z, _sh );
 
 		} else {
 
@@ -145,6 +170,7 @@ export class ProbeEdits {
 
 		volume.sh = this.shStore.subarray( 0, SH_FLOATS * total );
 		volume.sh.set( _sh, SH_FLOATS * index );
+		if ( volume.gradients !== null ) volume.gradients = this.grownGradients( volume.gradients, total );
 		volume.names.push( name );
 		volume.roles.push( role );
 		this.afterEdit( mesh );
@@ -161,8 +187,37 @@ export class ProbeEdits {
 		const mesh = this.editableMesh( where );
 		mesh.removeProbe( index );
 		this.volume.sh.fill( 0, SH_FLOATS * index, SH_FLOATS * ( index + 1 ) );
+		this.zeroGradient( index );
 		this.dirty.delete( index );
 		this.afterEdit( mesh );
+
+	}
+
+	/** A probe's gradient set to zero (moved, removed: plain until refitted); nothing for plain probes. */
+	private zeroGradient( index: number ): void {
+
+		this.volume.gradients?.fill( 0, GRADIENT_FLOATS * index, GRADIENT_FLOATS * ( index + 1 ) );
+
+	}
+
+	/**
+	 * `gradients` for `total` probes, the last one (just added) zero: a view of the capacity-doubling store, which is
+	 * (re)built from `gradients` when they are not its own view (new gradients were set) or it is full.
+	 */
+	private grownGradients( gradients: Float32Array, total: number ): Float32Array {
+
+		let store = this.gradientStore;
+		if ( store === null || gradients.buffer !== store.buffer || store.length < GRADIENT_FLOATS * total ) {
+
+			store = new Float32Array( GRADIENT_FLOATS * Math.max( 16, 2 * total ) );
+			store.set( gradients.subarray( 0, GRADIENT_FLOATS * ( total - 1 ) ) );
+			this.gradientStore = store;
+
+		}
+
+		const grown = store.subarray( 0, GRADIENT_FLOATS * total );
+		grown.fill( 0, GRADIENT_FLOATS * ( total - 1 ) );
+		return grown;
 
 	}
 

@@ -1,6 +1,7 @@
 import { BufferAttribute, InterleavedBuffer, InterleavedBufferAttribute, Matrix3, type BufferGeometry, type Material, type Mesh } from 'three';
-import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceAt } from '../sh/irradiance.js';
+import { blendProbes } from './gradientBlend.js';
+import { GradientTracker } from './gradientTracker.js';
 import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
 import { assertOptions } from '../validate.js';
 import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
@@ -50,7 +51,8 @@ const SH_NAMES = [ 0, 1, 2, 3, 4, 5, 6 ].map( ( i ) => `probeSH${i}` );
 
 /**
  * Probe light per vertex for a large mesh (a floor, a long wall): the tetrahedral field is sampled
- * at every vertex's world position — not once per object — so the light changes across the mesh.
+ * at every vertex's world position — not once per object — so the light changes across the mesh
+ * (gradient probes blended by the gradient formula at each vertex).
  * The mesh's materials that take probe light (Standard, Physical, Phong, Lambert, Toon) are
  * replaced by patched clones (restored by `dispose()`) that read vertex attributes written into
  * the mesh's geometry.
@@ -72,7 +74,10 @@ export class ProbeVertexLighting {
 	/** The lit mesh. */
 	readonly mesh: Mesh;
 
-	/** The probes: a `LightProbeVolume` or any `{ interpolator, sh }`. May be replaced (resampled on the next `update()`). */
+	/**
+	 * The probes: a `LightProbeVolume` or any `{ interpolator, sh, gradients?, positions? }`. May be replaced (resampled
+	 * on the next `update()`).
+	 */
 	field: ProbeField;
 
 	/** What the vertices store, see {@link ProbeVertexLightingOptions.output}. */
@@ -92,6 +97,7 @@ export class ProbeVertexLighting {
 	private readonly matrix = new Float64Array( 16 ).fill( NaN );
 	private lastField: ProbeField | null = null;
 	private shCopy: Float32Array | null = null;
+	private readonly gradientTracker = new GradientTracker();
 	private positionVersion = - 1;
 	private normalVersion = - 1;
 	private disposed = false;
@@ -184,8 +190,8 @@ export class ProbeVertexLighting {
 
 	/**
 	 * Recomputes the vertex light when the mesh moved (its `matrixWorld` changed), its positions or
-	 * normals changed (attribute `version`), the field was replaced or its SH changed. Call once per
-	 * frame (or after moving the mesh); allocation-free when nothing changed.
+	 * normals changed (attribute `version`), the field was replaced or its SH or gradients changed.
+	 * Call once per frame (or after moving the mesh); allocation-free when nothing changed.
 	 * @returns Whether it recomputed.
 	 */
 	update(): boolean {
@@ -211,6 +217,7 @@ export class ProbeVertexLighting {
 
 		const copy = trackSH( 'ProbeVertexLighting.update', this.field.sh, this.shCopy );
 		if ( copy !== null ) { this.shCopy = copy; changed = true; }
+		if ( this.gradientTracker.changed( 'ProbeVertexLighting.update', this.field.gradients, this.field.positions ) ) changed = true;
 		if ( ! changed ) return false;
 		this.compute();
 		return true;
@@ -233,7 +240,8 @@ export class ProbeVertexLighting {
 		this.normalVersion = normal?.version ?? - 1;
 		this.mesh.updateWorldMatrix( true, false );
 		const e = this.mesh.matrixWorld.elements;
-		const interpolator = this.field.interpolator, probeSH = this.field.sh, weightCount = interpolator.weightCount;
+		const field = this.field, interpolator = field.interpolator, probeSH = field.sh, weightCount = interpolator.weightCount;
+		const gradients = field.gradients, probePositions = field.positions;
 		const out = this.data, count = position.count, irradiance = this.output === 'irradiance';
 		// Direct reads when the attribute is a plain float array; getX() otherwise (interleaved, normalized).
 		const positions = directArray( position ), ps = position.itemSize;
@@ -245,13 +253,12 @@ export class ProbeVertexLighting {
 			const px = positions ? positions[ ps * i ] : position.getX( i );
 			const py = positions ? positions[ ps * i + 1 ] : position.getY( i );
 			const pz = positions ? positions[ ps * i + 2 ] : position.getZ( i );
+			const wx = e[ 0 ] * px + e[ 4 ] * py + e[ 8 ] * pz + e[ 12 ];
+			const wy = e[ 1 ] * px + e[ 5 ] * py + e[ 9 ] * pz + e[ 13 ];
+			const wz = e[ 2 ] * px + e[ 6 ] * py + e[ 10 ] * pz + e[ 14 ];
 			// Consecutive vertices are close: the previous vertex's cell is the walk's start.
-			hint = interpolator.interpolate(
-				e[ 0 ] * px + e[ 4 ] * py + e[ 8 ] * pz + e[ 12 ],
-				e[ 1 ] * px + e[ 5 ] * py + e[ 9 ] * pz + e[ 13 ],
-				e[ 2 ] * px + e[ 6 ] * py + e[ 10 ] * pz + e[ 14 ],
-				_indices, _weights, hint );
-			blendSH( _indices, _weights, probeSH, _sh, weightCount );
+			hint = interpolator.interpolate( wx, wy, wz, _indices, _weights, hint );
+			blendProbes( _indices, _weights, weightCount, probeSH, gradients, probePositions, wx, wy, wz, _sh );
 			if ( n !== null ) {
 
 				// E(n) for the vertex's world normal.

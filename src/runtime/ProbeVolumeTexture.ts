@@ -1,5 +1,6 @@
 import { Data3DTexture, DataUtils, FloatType, HalfFloatType, LinearFilter, RGBAFormat, Vector3 } from 'three';
-import { blendSH } from '../interpolation/blendSH.js';
+import { blendProbes } from './gradientBlend.js';
+import { GradientTracker } from './gradientTracker.js';
 import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
 import { assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 
@@ -104,7 +105,10 @@ export class ProbeVolumeTexture {
 	/** Grid nodes per axis (integers ≥ 2). */
 	readonly resolution = new Vector3( 2, 2, 2 );
 
-	/** The probes: a `LightProbeVolume` or any `{ interpolator, sh }`. Call `resample()` after replacing it. */
+	/**
+	 * The probes: a `LightProbeVolume` or any `{ interpolator, sh, gradients?, positions? }` (gradient probes are blended
+	 * by the gradient formula at each node). Call `resample()` after replacing it.
+	 */
 	field: ProbeField;
 
 	/** Texel type, see {@link ProbeVolumeTextureOptions.type}. */
@@ -112,6 +116,7 @@ export class ProbeVolumeTexture {
 
 	private readonly options: ProbeVolumeTextureOptions;
 	private shCopy: Float32Array | null = null;
+	private readonly gradientTracker = new GradientTracker();
 	private disposed = false;
 
 	/**
@@ -190,6 +195,7 @@ export class ProbeVolumeTexture {
 		}
 
 		this.shCopy = null;
+		this.gradientTracker.reset();
 		this.resample();
 		return this;
 
@@ -215,8 +221,8 @@ export class ProbeVolumeTexture {
 
 	/**
 	 * Samples the field at every node (walking from the previous node's cell) and uploads.
-	 * @returns Whether it resampled: false when the field's SH have not changed since the last time
-	 * and `force` is false.
+	 * @returns Whether it resampled: false when the field's SH and gradients have not changed since
+	 * the last time and `force` is false.
 	 */
 	resample( force = true ): boolean {
 
@@ -226,20 +232,23 @@ export class ProbeVolumeTexture {
 		assertProbeField( where, this.field );
 		const copy = trackSH( where, this.field.sh, this.shCopy );
 		if ( copy !== null ) this.shCopy = copy;
-		else if ( ! force ) return false;
+		const gradientsChanged = this.gradientTracker.changed( where, this.field.gradients, this.field.positions );
+		if ( copy === null && ! gradientsChanged && ! force ) return false;
 
 		const { x: nx, y: ny, z: nz } = this.resolution;
 		const data = ( this.texture.image as { data: Uint16Array | Float32Array } ).data;
 		const half = this.type === 'half';
-		const interpolator = this.field.interpolator, probeSH = this.field.sh, weightCount = interpolator.weightCount;
+		const field = this.field, interpolator = field.interpolator, probeSH = field.sh, weightCount = interpolator.weightCount;
+		const gradients = field.gradients, positions = field.positions;
 		const slice = nx * ny, padded = nz + 2, subVolume = slice * padded;
 		const x0 = this.min.x, y0 = this.min.y, z0 = this.min.z;
 		const dx = ( this.max.x - x0 ) / ( nx - 1 ), dy = ( this.max.y - y0 ) / ( ny - 1 ), dz = ( this.max.z - z0 ) / ( nz - 1 );
 		let hint = - 1;
 		for ( let iz = 0; iz < nz; iz ++ ) for ( let iy = 0; iy < ny; iy ++ ) for ( let ix = 0; ix < nx; ix ++ ) {
 
-			hint = interpolator.interpolate( x0 + ix * dx, y0 + iy * dy, z0 + iz * dz, _indices, _weights, hint );
-			blendSH( _indices, _weights, probeSH, _sh, weightCount );
+			const x = x0 + ix * dx, y = y0 + iy * dy, z = z0 + iz * dz;
+			hint = interpolator.interpolate( x, y, z, _indices, _weights, hint );
+			blendProbes( _indices, _weights, weightCount, probeSH, gradients, positions, x, y, z, _sh );
 			const texel = ix + nx * iy;
 			for ( let t = 0; t < 7; t ++ ) {
 

@@ -1,3 +1,4 @@
+import { boundsOf } from '../geometry/boundsOf.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { ProbeField } from './ProbeField.js';
 import type { ProbeZones } from './ProbeZones.js';
@@ -69,6 +70,14 @@ export interface VisibilityCache {
 
 	/** Nearest visible probe when every weighted probe is blocked: −2 not searched yet, −1 none. */
 	guardFallback: number;
+
+}
+
+/** The guard's default re-test distance for probes at `positions`: 1 % of their bounding-box diagonal. */
+export function defaultMoveThreshold( positions: ArrayLike<number> ): number {
+
+	const box = boundsOf( positions );
+	return 0.01 * Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] );
 
 }
 
@@ -223,13 +232,17 @@ export interface ZonedProbes extends ProbeField, WeightedProbes {
 	/** Number of probe ids. */
 	readonly count: number;
 
+	/** Probe positions, x, y, z per probe id. */
+	readonly positions: Float64Array;
+
 }
 
 /**
  * The field large objects sample: the whole volume without zones; with zones, each point (a
  * vertex, a texel) interpolates the probes of the zone whose bounds hold it — or of `fixedZone`
- * — so a floor running under a wall takes each room's light on its side. Not the visibility
- * guard: vertices lie on surfaces, whose own triangles would block every segment.
+ * — so a floor running under a wall takes each room's light on its side; gradient probes blend
+ * with the volume's gradients and positions. Not the visibility guard: vertices lie on surfaces,
+ * whose own triangles would block every segment.
  */
 export function zonedProbeField( volume: ZonedProbes, fixedZone: number ): ProbeField {
 
@@ -259,6 +272,11 @@ export function zonedProbeField( volume: ZonedProbes, fixedZone: number ): Probe
 
 		},
 	};
-	return { interpolator, get sh() { return volume.sh; } };
+	return {
+		interpolator,
+		get sh() { return volume.sh; },
+		get gradients() { return volume.gradients; },
+		get positions() { return volume.positions; },
+	};
 
 }

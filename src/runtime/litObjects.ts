@@ -1,9 +1,9 @@
 import { Box3, Matrix4, Vector3, type Material, type Mesh, type Object3D, type SkinnedMesh } from 'three';
-import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertNumber, assertOptionalBoolean, describeValue, firstBeyond } from '../validate.js';
 import { anchorInWorld } from './anchorInWorld.js';
 import { describeObject, meshWorldBox } from './chooseLighting.js';
+import { blendProbes } from './gradientBlend.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import { MeshTextureLighting } from './MeshTextureLighting.js';
 import { ProbeTextureLighting } from './ProbeTextureLighting.js';
@@ -145,13 +145,17 @@ export function disposeLitObject( entry: LitObject ): void {
 
 /**
  * One frame of an entry: large objects resample when they moved or the SH changed; an object-mode
- * entry is weighed at its anchor (in its zone, walking from last frame's cell, through the guard)
- * and its irradiance matrices written — zeros (no probe light) when the blend is not finite or
- * far beyond ±SH_LIMIT (SH written into the volume's `sh` directly). Allocation-free.
+ * entry is weighed at its anchor (in its zone, walking from last frame's cell, through the guard),
+ * blended there (by the gradient formula at the anchor for gradient probes) and its irradiance
+ * matrices written — zeros (no probe light) when the blend is not finite or far beyond ±SH_LIMIT
+ * (SH written into the volume's `sh` directly). Allocation-free.
+ * @param gradients The volume's gradients (81 per probe, checked by the caller), or null.
+ * @param positions The volume's probe positions.
  * @returns false when the blend was refused (see {@link reportBadBlend}), else true.
  */
 export function updateLitObject(
-	entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array, version: number,
+	entry: LitObject, weighting: ProbeWeighting, zones: ProbeZones | null, sh: Float32Array, gradients: Float32Array | null,
+	positions: Float64Array, version: number,
 ): boolean {
 
 	if ( entry.static && ! staticEntryChanged( entry, version ) ) return true;
@@ -177,7 +181,7 @@ export function updateLitObject(
 	}
 
 	entry.hint = weighting.weigh( x, y, z, zone, entry.hint, entry );
-	const blend = blendSH( weighting.indices, weighting.weights, sh, entry.sh, weighting.count );
+	const blend = blendProbes( weighting.indices, weighting.weights, weighting.count, sh, gradients, positions, x, y, z, entry.sh );
 	// Σ v² ≤ 28 · SH_LIMIT² holds for every blend of valid probes (each |v| ≤ SH_LIMIT, weights summing to 1)
 	// and bounds each |v| by 5.3 · SH_LIMIT, which keeps the matrices and the shader's nᵀMn finite in
 	// float32; NaN and ±Infinity fail it. Three running sums: no branch, no dependency chain of 27.
@@ -221,15 +225,22 @@ function staticEntryChanged( entry: LitObject, version: number ): boolean {
 /**
  * Throws the RangeError for an entry whose blend {@link updateLitObject} refused: names the object
  * and the first probe whose SH (written into the volume's `sh` directly) is not finite or beyond
- * ±1e30, or the object's position when the probes are fine.
+ * ±1e30, or whose gradient is not finite, or the object's position when the probes are fine.
  */
-export function reportBadBlend( where: string, entry: LitObject, sh: Float32Array ): never {
+export function reportBadBlend( where: string, entry: LitObject, sh: Float32Array, gradients: Float32Array | null ): never {
 
 	const name = describeObject( entry.object );
-	const i = firstBeyond( sh, SH_LIMIT );
-	const cause = i >= 0
-		? `probe ${Math.floor( i / SH_FLOATS )} holds sh[${i}] = ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}`
+	const i = firstBeyond( sh, SH_LIMIT ), j = gradients !== null ? firstBeyond( gradients, Infinity ) : - 1;
+	let cause = gradients !== null
+		? 'its position is not finite, or so far from the probes that their gradients take the blend beyond the SH limit'
 		: 'its position is not finite';
+	if ( j >= 0 ) cause = `probe ${Math.floor( j / 81 )} holds gradients[${j}] = ${gradients![ j ]}; probe gradients must be finite`;
+	if ( i >= 0 ) {
+
+		cause = `probe ${Math.floor( i / SH_FLOATS )} holds sh[${i}] = ${sh[ i ]}; probe SH must be finite and within ±${SH_LIMIT.toPrecision( 3 )}`;
+
+	}
+
 	throw new RangeError( `${where}: the blend for object ${name} is not finite (${cause}); its probe light is off (zero matrices).` );
 
 }

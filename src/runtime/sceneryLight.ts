@@ -1,7 +1,7 @@
-import { blendSH } from '../interpolation/blendSH.js';
 import { irradianceMatrices } from '../sh/irradiance.js';
 import { SH_FLOATS } from '../validate.js';
 import { anchorInWorld } from './anchorInWorld.js';
+import { blendProbes } from './gradientBlend.js';
 import type { LitObject } from './litObjects.js';
 import type { ProbeField } from './ProbeField.js';
 import { MAX_WEIGHTS } from './ProbeWeighting.js';
@@ -96,13 +96,17 @@ export function lightScenery( lit: readonly LitObject[], field: ProbeField ): ()
 
 }
 
-/** The irradiance matrices of `field` blended at an entry's anchor (world position of its local anchor). */
+/**
+ * The irradiance matrices of `field` blended at an entry's anchor (world position of its local anchor), by the
+ * gradient formula there when the field has gradients.
+ */
 function blendAtAnchor( entry: LitObject, field: ProbeField, matrices: Float32Array ): void {
 
 	entry.object.updateWorldMatrix( true, false );
 	const world = anchorInWorld( entry.object, entry.anchor, _world );
-	const interpolator = field.interpolator;
-	interpolator.interpolate( world[ 0 ], world[ 1 ], world[ 2 ], _indices, _weights, - 1 );
-	irradianceMatrices( blendSH( _indices, _weights, field.sh, _sh, interpolator.weightCount ), matrices );
+	const x = world[ 0 ], y = world[ 1 ], z = world[ 2 ], interpolator = field.interpolator;
+	interpolator.interpolate( x, y, z, _indices, _weights, - 1 );
+	const count = interpolator.weightCount;
+	irradianceMatrices( blendProbes( _indices, _weights, count, field.sh, field.gradients, field.positions, x, y, z, _sh ), matrices );
 
 }
