@@ -84,12 +84,38 @@ export function checkSH( where: string, name: string, sh: ArrayLike<number> ): v
 
 }
 
-/** Finite gradients ('nan') with every |value| ≤ SH_LIMIT ('range'), the bound of the SH they change. */
-export function checkGradients( where: string, gradients: ArrayLike<number> ): void {
+/** The largest finite float32. */
+const FLOAT32_MAX = 3.4028234663852886e38;
+
+/**
+ * The largest |gradient value| probes at `positions` may hold: SH_LIMIT over the diagonal of their
+ * box, so the gradient term across the layout stays within the SH bound (the largest float32 when
+ * they span no distance). The runtime's rule (`gradientLimit` in src/runtime/gradientProbes.ts), so
+ * that every file the codec accepts loads.
+ */
+export function gradientLimit( positions: Float64Array ): number {
+
+	const box = boxOf( positions );
+	const diagonal = Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] );
+	return diagonal > 0 ? Math.min( SH_LIMIT / diagonal, FLOAT32_MAX ) : FLOAT32_MAX;
+
+}
+
+/**
+ * Finite gradients ('nan') within ±{@link gradientLimit} ('range'), checked on the stored values
+ * (float32 or float16 roundings) so that the reader finds what the writer checked.
+ */
+export function checkGradients( where: string, gradients: ArrayLike<number>, positions: Float64Array ): void {
 
 	checkFinite( where, 'gradients', gradients );
-	const i = firstBeyond( gradients, SH_LIMIT );
-	if ( i >= 0 ) fail( 'range', where, `gradients[${i}] is ${gradients[ i ]}; gradient values must be within ±${SH_LIMIT.toPrecision( 3 )}.` );
+	const limit = gradientLimit( positions );
+	const i = firstBeyond( gradients, limit );
+	if ( i >= 0 ) {
+
+		fail( 'range', where, `gradients[${i}] is ${gradients[ i ]}; gradient values must be within ±${limit.toPrecision( 3 )} `
+			+ `(${SH_LIMIT.toPrecision( 3 )} / the probes' bounding-box diagonal: the gradient term across the layout stays within the SH bound).` );
+
+	}
 
 }
 

@@ -312,7 +312,7 @@ export function decodeBakedVolume( buffer: ArrayBuffer | ArrayBufferView ): Bake
 	if ( grd ) {
 
 		gradients = readFloats( where, 'gradients', view, grd.offset, GRADIENT_FLOATS * probeCount, half );
-		checkGradients( where, gradients );
+		checkGradients( where, gradients, positions );
 
 	}
 

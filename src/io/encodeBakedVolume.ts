@@ -29,6 +29,8 @@ export function encodeBakedVolume( input: BakedVolumeInput, options: EncodeBaked
 
 	// SH and gradients in the file's precision: float32 as they are, float16 converted (header flag bit 0).
 	const sh = precision === 'float16' ? toFloat16( where, 'sh', data.sh ) : data.sh;
+	// The gradient bound is ≥ 1e30 / (2e18·√3) ≈ 2.9e11 (positions within ±1e18), beyond float16's
+	// range: float16 roundings never cross it.
 	const gradients = data.gradients && precision === 'float16' ? toFloat16( where, 'gradients', data.gradients ) : data.gradients;
 	const fitText = data.fit ? utf8Encoder.encode( JSON.stringify( data.fit ) ) : null;
 

@@ -90,8 +90,9 @@ export function validateBakedVolume( input: BakedVolumeInput, where = 'validateB
 
 		}
 
-		checkGradients( where, g );
+		// Checked as stored (float32): the bound is not a float32 value, so rounding could cross it.
 		gradients = g instanceof Float32Array ? g : Float32Array.from( g );
+		checkGradients( where, gradients, positions );
 
 	}
 

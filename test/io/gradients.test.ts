@@ -24,7 +24,8 @@ function randomGradients( probes: number, seed: number ): Float32Array {
 
 const FIT: BakedFit = { samples: 1596, gradients: true, lambda: 0.03125, gradientLambda: 0.5, crossValidationError: 0.109, source: 'dense captures at spacing 0.5 — hall ✓' };
 const plain = makeVolume( PROBES, 21 );
-const volume: BakedVolumeInput = { ...plain, gradients: randomGradients( PROBES, 22 ), fit: FIT };
+const GRADIENTS = randomGradients( PROBES, 22 );
+const volume: BakedVolumeInput = { ...plain, gradients: GRADIENTS, fit: FIT };
 const file = encodeBakedVolume( volume );
 
 /** The section ids of a file in table order, as their four characters. */
@@ -50,7 +51,7 @@ describe( 'baked format 1.1: gradients and the fit record round-trip', () => {
 		const stored = new DataView( grad.bytes.buffer );
 		for ( const index of [ 0, 80, 81 * 7 + 27 * 2 + 26, 81 * PROBES - 1 ] ) {
 
-			expect( stored.getFloat32( 4 * index, true ) ).toBe( volume.gradients![ index ] );
+			expect( stored.getFloat32( 4 * index, true ) ).toBe( GRADIENTS[ index ] );
 
 		}
 
@@ -58,7 +59,7 @@ describe( 'baked format 1.1: gradients and the fit record round-trip', () => {
 
 		const d = decodeBakedVolume( file );
 		expect( d.gradients ).toBeInstanceOf( Float32Array );
-		expect( Array.from( d.gradients! ) ).toEqual( Array.from( volume.gradients! ) );
+		expect( Array.from( d.gradients! ) ).toEqual( Array.from( GRADIENTS ) );
 		expect( d.fit ).toEqual( FIT );
 		expect( Array.from( d.sh ) ).toEqual( Array.from( plain.sh ) );
 
@@ -75,7 +76,7 @@ describe( 'baked format 1.1: gradients and the fit record round-trip', () => {
 
 	it( 'float16: header flag bit 0 covers the gradients too (162 bytes per probe), each within half precision', () => {
 
-		const gradients = Float32Array.from( volume.gradients! );
+		const gradients = Float32Array.from( GRADIENTS );
 		gradients.set( [ 1e-7, - 3e-6, 6.1e-5, 65504, - 65504, 0 ], 0 ); // subnormals, the largest half, zero
 		const half = encodeBakedVolume( { ...volume, gradients }, { precision: 'float16' } );
 		expect( new DataView( half ).getUint32( 24, true ) ).toBe( 1 );
@@ -95,7 +96,7 @@ describe( 'baked format 1.1: gradients and the fit record round-trip', () => {
 
 	it( 'float16 overflow of a gradient is an error naming it (float16-overflow), not a clamp', () => {
 
-		const gradients = Float32Array.from( volume.gradients! );
+		const gradients = Float32Array.from( GRADIENTS );
 		gradients[ 500 ] = - 70000;
 		expectError( 'float16-overflow', () => encodeBakedVolume( { ...volume, gradients }, { precision: 'float16' } ), /gradients\[500\] = -70000.*float32/ );
 
@@ -139,7 +140,7 @@ describe( 'baked format 1.1: gradients and the fit record round-trip', () => {
 		expect( json.version ).toEqual( [ 1, 1 ] );
 		expect( json.gradients ).toHaveLength( 81 * PROBES );
 		const d = bakedVolumeFromJSON( JSON.stringify( json ) );
-		expect( Array.from( d.gradients! ) ).toEqual( Array.from( volume.gradients! ) );
+		expect( Array.from( d.gradients! ) ).toEqual( Array.from( GRADIENTS ) );
 		expect( d.fit ).toEqual( FIT );
 		// The JSON form and the binary form carry the same data.
 		expect( bakedVolumeToJSON( decodeBakedVolume( file ) ) ).toEqual( json );
@@ -183,11 +184,37 @@ describe( 'baked format 1.1: malformed gradients and fit records, by name', () =
 		const grad = sectionOffset( file, 'GRAD' );
 		expectError( 'nan', () => decodeBakedVolume( edited( file, ( v ) => v.setFloat32( grad + 4 * 77, NaN, true ) ) ), /gradients\[77\] is NaN/ );
 		expectError( 'nan', () => decodeBakedVolume( edited( file, ( v ) => v.setFloat32( grad + 4 * 78, Infinity, true ) ) ), /gradients\[78\] is Infinity/ );
-		expectError( 'range', () => decodeBakedVolume( edited( file, ( v ) => v.setFloat32( grad + 4 * 79, - 3e38, true ) ) ), /gradients\[79\].*within ±1\.00e\+30/ );
+		expectError( 'range', () => decodeBakedVolume( edited( file, ( v ) => v.setFloat32( grad + 4 * 79, - 3e38, true ) ) ), /gradients\[79\] is -3/ );
 		const half = encodeBakedVolume( volume, { precision: 'float16' } ), halfGrad = sectionOffset( half, 'GRAD' );
 		expectError( 'nan', () => decodeBakedVolume( edited( half, ( v ) => v.setUint16( halfGrad + 2 * 5, 0x7E00, true ) ) ), /gradients\[5\] is NaN/ );
 		expectError( 'nan', () => decodeBakedVolume( edited( half, ( v ) => v.setUint16( halfGrad + 2 * 6, 0xFC00, true ) ) ), /gradients\[6\] is Infinity/ );
 
+	} );
+
+	it( 'the gradient bound is 1e30 over the probes\' bounding-box diagonal (the runtime\'s), checked on the float32 values; scale-free', () => {
+
+		// Unit tetrahedron corners scaled by s: the box is s × s × s, its diagonal s·√3.
+		const at = ( s: number ) => [ 0, 0, 0, s, 0, 0, 0, s, 0, 0, 0, s ];
+		const sh = new Float32Array( 4 * 27 );
+		const limit = ( s: number ) => Math.fround( 1e30 ) / ( s * Math.sqrt( 3 ) );
+		const withGradient = ( s: number, v: number ) => ( { positions: at( s ), sh, gradients: new Float32Array( 4 * 81 ).fill( v ) } );
+		for ( const s of [ 1e-6, 1, 1e6 ] ) {
+
+			// float32 steps are 2^−23 relative: 1 − 1e−6 of the bound is inside it after rounding, 1 + 1e−6 outside.
+			const inside = Math.fround( limit( s ) * ( 1 - 1e-6 ) ), outside = limit( s ) * ( 1 + 1e-6 );
+			expect( decodeBakedVolume( encodeBakedVolume( withGradient( s, - inside ) ) ).gradients![ 0 ] ).toBe( - inside );
+			expectError( 'range', () => encodeBakedVolume( withGradient( s, outside ) ), /gradients\[0\] is .*within ±.*bounding-box diagonal/ );
+
+		}
+
+		// A float64 gradient exactly at the bound whose float32 rounding is above it: refused (what is stored is checked).
+		let s = 1;
+		while ( ! ( Math.fround( limit( s ) ) > limit( s ) ) ) s ++;
+		const atBound = { positions: at( s ), sh, gradients: new Float64Array( 4 * 81 ).fill( limit( s ) ) };
+		expectError( 'range', () => encodeBakedVolume( atBound ), /gradients\[0\]/ );
+
+		// A layout 1e6 times smaller takes gradients 1e6 times larger: 1e31 is valid at s = 1e-6 (bound 5.8e35).
+		expect( decodeBakedVolume( encodeBakedVolume( withGradient( 1e-6, 1e31 ) ) ).gradients![ 5 ] ).toBe( Math.fround( 1e31 ) );
 	} );
 
 	it( 'a file cut inside GRAD → truncated; one flipped bit in GRAD or FITS → checksum (the CRC covers them)', () => {
@@ -228,10 +255,10 @@ describe( 'baked format 1.1: malformed gradients and fit records, by name', () =
 
 	it( 'the encoder and the JSON reader check the same: gradients length, type, NaN (and JSON null), fit values', () => {
 
-		expectError( 'count', () => encodeBakedVolume( { ...volume, gradients: volume.gradients!.subarray( 81 ) } ), /gradients has 2349 values; 30 probes need 81 each \(2430\)/ );
+		expectError( 'count', () => encodeBakedVolume( { ...volume, gradients: GRADIENTS.subarray( 81 ) } ), /gradients has 2349 values; 30 probes need 81 each \(2430\)/ );
 		expectError( 'count', () => encodeBakedVolume( { ...volume, gradients: new Float32Array( 80 ) } ), /gradients has length 80, not a multiple of 81/ );
 		expectError( 'argument', () => encodeBakedVolume( { ...volume, gradients: 'none' as unknown as number[] } ), /gradients must be an array/ );
-		const nan = Float64Array.from( volume.gradients! );
+		const nan = Float64Array.from( GRADIENTS );
 		nan[ 12 ] = NaN;
 		expectError( 'nan', () => validateBakedVolume( { ...volume, gradients: nan } ), /gradients\[12\] is NaN/ );
 		expectError( 'nan', () => encodeBakedVolume( { ...volume, fit: { ...FIT, lambda: NaN } } ), /fit\.lambda is NaN/ );
