@@ -208,13 +208,14 @@ describe( 'baked format 1.1: malformed gradients and fit records, by name', () =
 		}
 
 		// A float64 gradient exactly at the bound whose float32 rounding is above it: refused (what is stored is checked).
-		let s = 1;
-		while ( ! ( Math.fround( limit( s ) ) > limit( s ) ) ) s ++;
-		const atBound = { positions: at( s ), sh, gradients: new Float64Array( 4 * 81 ).fill( limit( s ) ) };
+		let scale = 1;
+		while ( ! ( Math.fround( limit( scale ) ) > limit( scale ) ) ) scale ++;
+		const atBound = { positions: at( scale ), sh, gradients: new Float64Array( 4 * 81 ).fill( limit( scale ) ) };
 		expectError( 'range', () => encodeBakedVolume( atBound ), /gradients\[0\]/ );
 
 		// A layout 1e6 times smaller takes gradients 1e6 times larger: 1e31 is valid at s = 1e-6 (bound 5.8e35).
 		expect( decodeBakedVolume( encodeBakedVolume( withGradient( 1e-6, 1e31 ) ) ).gradients![ 5 ] ).toBe( Math.fround( 1e31 ) );
+
 	} );
 
 	it( 'a file cut inside GRAD → truncated; one flipped bit in GRAD or FITS → checksum (the CRC covers them)', () => {
