@@ -19,9 +19,10 @@ const ALLOWED: Record<string, readonly string[]> = {
 	tetrahedra: [ 'geometry', 'root' ],
 	interpolation: [ 'tetrahedra', 'geometry', 'sh', 'root' ],
 	io: [ 'tetrahedra', 'geometry', 'sh', 'root' ],
-	placement: [ 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
+	fitting: [ 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
+	placement: [ 'fitting', 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
 	capture: [ 'sh', 'root' ],
-	runtime: [ 'capture', 'io', 'placement', 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
+	runtime: [ 'capture', 'io', 'placement', 'fitting', 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
 	gltf: [ 'io', 'root' ],
 };
 
@@ -29,7 +30,7 @@ const ALLOWED: Record<string, readonly string[]> = {
 const ENTRIES = [ 'index.ts', 'math.ts', 'format.ts', 'capture.ts', 'lightProbeGrid.ts' ];
 
 /** Folders that must not load three.js, and the three.js glue files allowed inside them. */
-const PURE = [ 'root', 'geometry', 'sh', 'tetrahedra', 'interpolation', 'io', 'placement' ];
+const PURE = [ 'root', 'geometry', 'sh', 'tetrahedra', 'interpolation', 'fitting', 'io', 'placement' ];
 const GLUE_IN_PURE = [ 'geometry/gatherWorldGeometry.ts', 'placement/placeFromMeshes.ts', 'placement/findProbeLocators.ts' ];
 
 function sourceFiles( folder: string ): string[] {
