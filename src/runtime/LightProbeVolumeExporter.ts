@@ -25,8 +25,9 @@ const OPTION_NAMES = [ 'binary', 'precision' ];
 /**
  * Writes a {@link LightProbeVolume} as a baked file (docs/format.md) for {@link LightProbeVolumeLoader}
  * or `capture-lighting inspect`, as three's exporters write scenes: the binary form (default) or
- * the JSON form. The file holds positions, SH, the tetrahedralization, names, roles, zones,
- * capture settings and metadata; probes removed by `removeProbe()` are left out.
+ * the JSON form. The file holds positions, SH, gradients (gradient probes), the tetrahedralization,
+ * names, roles, zones, capture settings, the fit record (`fitSettings`) and metadata; probes
+ * removed by `removeProbe()` are left out.
  *
  * ```js
  * const file = new LightProbeVolumeExporter().parse( volume, { precision: 'float16' } ); // ArrayBuffer
@@ -39,7 +40,8 @@ export class LightProbeVolumeExporter {
 	 * The volume as a baked file: an `ArrayBuffer` (binary, the default) or the JSON object.
 	 * @param volume The volume to write.
 	 * @param options `binary` (default true) and, for the binary form, `precision` (default `'float32'`).
-	 * @throws {BakedVolumeError} when the volume cannot be written (`'float16-overflow'`: an SH value beyond ±65504 in float16).
+	 * @throws {BakedVolumeError} when the volume cannot be written (`'float16-overflow'`: an SH or gradient value beyond ±65504
+	 * in float16; `'count'`: `fitSettings.gradients` is true but the volume has no gradients).
 	 */
 	parse( volume: LightProbeVolume, options?: LightProbeVolumeBinaryOptions ): ArrayBuffer;
 	parse( volume: LightProbeVolume, options: LightProbeVolumeJSONOptions ): BakedVolumeJSON;

@@ -49,7 +49,7 @@ export class LightProbeVolumeLoader extends Loader<LightProbeVolume> {
 	/**
 	 * Sets the constructor parameters that `load()` and `parse()` add to what a file holds, such as
 	 * `occluders` (the level's static geometry for the visibility guard) and `guard`.
-	 * @param parameters Constructor parameters other than those a file gives (positions, SH, names, roles, zones, interpolator).
+	 * @param parameters Constructor parameters other than those a file gives (positions, SH, gradients, names, roles, zones, interpolator).
 	 */
 	setParameters( parameters: BakedVolumeParameters ): this {
 

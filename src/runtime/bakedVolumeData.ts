@@ -2,8 +2,9 @@ import { FloatType } from 'three';
 import type { ProbeCaptureSettings } from '../capture/ProbeCapturer.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import type { BakedCapture, BakedCaptureSettings, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
+import type { BakedCapture, BakedCaptureSettings, BakedFit, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
 import { PROBE_ROLES, type ProbeRole } from '../roles.js';
+import { GRADIENT_FLOATS } from './gradientProbes.js';
 import { SH_FLOATS, assertOptions, describeValue } from '../validate.js';
 import type { LightProbeVolumeCaptureOptions, LightProbeVolumeParameters } from './LightProbeVolumeOptions.js';
 import type { BoxLike, ProbeZones } from './ProbeZones.js';
@@ -18,6 +19,8 @@ export interface BakedSource {
 
 	readonly positions: Float64Array;
 	readonly sh: Float32Array;
+	readonly gradients: Float32Array | null;
+	readonly fitSettings: BakedFit | null;
 	readonly names: readonly string[];
 	readonly roles: readonly ProbeRole[];
 	readonly interpolator: ProbeInterpolator;
@@ -31,10 +34,10 @@ export interface BakedSource {
 
 /** The constructor parameters a baked file gives. */
 export type BakedParameters = Required<Pick<LightProbeVolumeParameters, 'positions' | 'sh' | 'names' | 'roles'>>
-	& Pick<LightProbeVolumeParameters, 'zones' | 'interpolator'>;
+	& Pick<LightProbeVolumeParameters, 'zones' | 'interpolator' | 'gradients'>;
 
 /** The constructor parameters that come from a baked file, so a caller may not pass them. */
-const FILE_PARAMETERS: readonly ( keyof BakedParameters )[] = [ 'positions', 'sh', 'names', 'roles', 'zones', 'interpolator' ];
+const FILE_PARAMETERS: readonly ( keyof BakedParameters )[] = [ 'positions', 'sh', 'names', 'roles', 'zones', 'interpolator', 'gradients' ];
 
 /**
  * Constructor parameters of a volume loaded from a baked file besides those the file gives, e.g.
@@ -64,9 +67,10 @@ export function assertBakedVolumeParameters( where: string, parameters: unknown 
 }
 
 /**
- * `LightProbeVolume.toBakedData`: positions, SH, the tetrahedralization (when the interpolator is
- * a `TetrahedralMesh`), names, roles, zones, capture settings and metadata — the volume's own
- * arrays, except after `removeProbe()`, when the live probes are renumbered into new arrays.
+ * `LightProbeVolume.toBakedData`: positions, SH, gradients, the tetrahedralization (when the
+ * interpolator is a `TetrahedralMesh`), names, roles, zones, capture settings, the fit record and
+ * metadata — the volume's own arrays, except after `removeProbe()`, when the live probes are
+ * renumbered into new arrays.
  */
 export function toBakedVolumeInput( volume: BakedSource ): BakedVolumeInput {
 
@@ -81,26 +85,29 @@ export function toBakedVolumeInput( volume: BakedSource ): BakedVolumeInput {
 		const id = new Int32Array( count ).fill( - 1 ), keep: number[] = [];
 		for ( let i = 0; i < count; i ++ ) if ( volume.isProbeActive( i ) ) { id[ i ] = keep.length; keep.push( i ); }
 		const positions = new Float64Array( 3 * active ), sh = new Float32Array( SH_FLOATS * active );
+		const gradients = volume.gradients ? new Float32Array( GRADIENT_FLOATS * active ) : null;
 		keep.forEach( ( i, k ) => {
 
 			positions.set( volume.positions.subarray( 3 * i, 3 * i + 3 ), 3 * k );
 			sh.set( volume.sh.subarray( SH_FLOATS * i, SH_FLOATS * ( i + 1 ) ), SH_FLOATS * k );
+			gradients?.set( volume.gradients!.subarray( GRADIENT_FLOATS * i, GRADIENT_FLOATS * ( i + 1 ) ), GRADIENT_FLOATS * k );
 
 		} );
 		return {
-			positions, sh, names: keep.map( ( i ) => volume.names[ i ] ), roles: keep.map( ( i ) => volume.roles[ i ] ),
+			positions, sh, gradients, names: keep.map( ( i ) => volume.names[ i ] ), roles: keep.map( ( i ) => volume.roles[ i ] ),
 			tetrahedra: mesh.tetrahedra.map( ( v ) => id[ v ] ), neighbors: mesh.neighbors,
-			capture: volume.captureSettings, metadata: volume.metadata,
+			capture: volume.captureSettings, fit: volume.fitSettings, metadata: volume.metadata,
 		};
 
 	}
 
 	return {
 		positions: volume.positions.subarray( 0, 3 * count ), sh: volume.sh.subarray( 0, SH_FLOATS * count ),
+		gradients: volume.gradients?.subarray( 0, GRADIENT_FLOATS * count ) ?? null,
 		names: volume.names, roles: volume.roles,
 		tetrahedra: mesh?.tetrahedra, neighbors: mesh?.neighbors,
 		zones: volume.zones?.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: zone.bounds } ) ),
-		capture: volume.captureSettings, metadata: volume.metadata,
+		capture: volume.captureSettings, fit: volume.fitSettings, metadata: volume.metadata,
 	};
 
 }
@@ -137,6 +144,10 @@ export function checkBakedData( where: string, data: unknown ): asserts data is 
 	expect( 'bounds', d.bounds instanceof Float64Array && d.bounds.length === 6, 'a Float64Array of 6 numbers' );
 	expect( 'capture', d.capture !== null && typeof d.capture === 'object', 'an object' );
 	expect( 'metadata', typeof d.metadata === 'string', 'a string' );
+	// Absent in data made before version 1.1 of the format: plain probes, not fitted.
+	expect( 'gradients', d.gradients == null || ( d.gradients instanceof Float32Array && d.gradients.length === GRADIENT_FLOATS * count ),
+		`null or a Float32Array of ${GRADIENT_FLOATS} floats per probe` );
+	expect( 'fit', d.fit == null || ( typeof d.fit === 'object' && ! Array.isArray( d.fit ) ), 'null or a fit record object' );
 	for ( const [ z, zone ] of ( d.zones as unknown[] ).entries() ) {
 
 		const bounds = ( zone as { bounds?: unknown } | null )?.bounds;
@@ -147,7 +158,8 @@ export function checkBakedData( where: string, data: unknown ): asserts data is 
 }
 
 /**
- * The constructor parameters of decoded baked data: the stored tetrahedralization as the
+ * The constructor parameters of decoded baked data (the gradients among them; the fit record is
+ * `fitSettings`, set by `fromBakedData`): the stored tetrahedralization as the
  * interpolator (not checked again: the decoder did), or none (the default interpolator is built) —
  * also when the stored tetrahedra do not fill the probes' convex hull, which the format allows
  * but the outer cells cannot extrapolate from (a warning says so).
@@ -175,7 +187,8 @@ export function parametersFromBakedData( data: BakedVolumeData ): BakedParameter
 	const zones = data.zones.length > 0
 		? data.zones.map( ( zone ) => ( { name: zone.name, probes: zone.probes, bounds: boxes( zone.bounds ) } ) )
 		: undefined;
-	return { positions: data.positions, sh: data.sh, names: data.names, roles: data.roles, zones, interpolator };
+	const gradients = data.gradients ?? undefined;
+	return { positions: data.positions, sh: data.sh, gradients, names: data.names, roles: data.roles, zones, interpolator };
 
 }
 
