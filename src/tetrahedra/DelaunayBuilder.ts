@@ -8,15 +8,32 @@ export const INF = - 1;
 /** Marks a released cell slot (in its first vertex). */
 export const FREE = - 2;
 
-// SLOT_PAIR[8i + 2j], [8i + 2j + 1]: the two slots of a tetrahedron other than i and j.
-const SLOT_PAIR = new Int8Array( 32 );
-for ( let i = 0; i < 4; i ++ ) for ( let j = 0; j < 4; j ++ ) {
+// FACE_EDGES[9i + 3r .. 9i + 3r + 2] = j, s1, s2 for the r-th slot j ≠ i: the face opposite j of a
+// positive tetrahedron, oriented so that vertex j is on its positive side, read as the cycle
+// (slot i, s1, s2). The neighbour across that face sees the same triangle in the opposite cycle, so
+// with i holding the new point both name the edge they share besides it, in opposite directions.
+const FACE_EDGES = new Int8Array( 36 );
+for ( let i = 0; i < 4; i ++ ) {
 
-	const rest = [ 0, 1, 2, 3 ].filter( ( m ) => m !== i && m !== j );
-	SLOT_PAIR[ 8 * i + 2 * j ] = rest[ 0 ] ?? 0;
-	SLOT_PAIR[ 8 * i + 2 * j + 1 ] = rest[ 1 ] ?? 0;
+	let r = 0;
+	for ( let j = 0; j < 4; j ++ ) {
+
+		if ( j === i ) continue;
+		const [ a, b, c ] = [ 0, 1, 2, 3 ].filter( ( m ) => m !== j );
+		// ( a, b, c, j ) is an even permutation of ( 0, 1, 2, 3 ) exactly when j is odd.
+		const cycle = j % 2 === 1 ? [ a, b, c ] : [ a, c, b ];
+		const at = cycle.indexOf( i );
+		FACE_EDGES[ 9 * i + 3 * r ] = j;
+		FACE_EDGES[ 9 * i + 3 * r + 1 ] = cycle[ ( at + 1 ) % 3 ];
+		FACE_EDGES[ 9 * i + 3 * r + 2 ] = cycle[ ( at + 2 ) % 3 ];
+		r ++;
+
+	}
 
 }
+
+// Multiplier of the edge hash (Knuth's multiplicative hashing; the high bits are kept).
+const EDGE_HASH = 0x9E3779B1;
 
 const _startCells = new Int32Array( 5 );
 const _startVertices = new Int32Array( 4 );
@@ -70,10 +87,7 @@ export class DelaunayBuilder {
 
 	// Per-insertion scratch, grown on demand.
 	private stack = new Int32Array( 256 );
-	private edgeKeyA = new Int32Array( 1024 );
-	private edgeKeyB = new Int32Array( 1024 );
-	private edgeValue = new Int32Array( 1024 );
-	private edgeStamp = new Int32Array( 1024 );
+	private edgeTable = new Int32Array( 4 * 256 );
 
 	constructor( p: Float64Array, pointCount: number, diagonal: number ) {
 
@@ -404,9 +418,13 @@ export class DelaunayBuilder {
 		const adj = this.adjacency;
 		if ( this.created.length < boundarySize ) this.created = new Int32Array( boundarySize * 2 );
 		const created = this.created, boundary = this.boundary;
-		const mask = this.prepareEdgeTable( boundarySize * 3 ) - 1;
+		// 1.5 entries per boundary face (half of the 3 lookups insert) in at least 8 slots per face,
+		// in a power-of-two prefix of the scratch array so that it stays small in the cache.
+		let size = 64;
+		while ( size < boundarySize * 8 ) size *= 2;
+		const table = this.prepareEdgeTable( size );
+		const mask = size - 1, shift = Math.clz32( mask );
 		const edgeStamp = ++ this.stamp;
-		const keyA = this.edgeKeyA, keyB = this.edgeKeyB, value = this.edgeValue, used = this.edgeStamp;
 		// Slots as `allocate` hands them out (free list first, LIFO), inlined: `reserve` made room.
 		const freeList = this.freeList;
 		let freeCount = this.freeCount;
@@ -424,33 +442,32 @@ export class DelaunayBuilder {
 			created[ f ] = n;
 
 			// The three faces through q are shared with other new cells; pair them by the edge they
-			// have besides q (the two slots other than i and j).
-			for ( let j = 0; j < 4; j ++ ) {
+			// have besides q, which the two cells name in opposite directions (FACE_EDGES). Entries
+			// are 4 ints: stamp, edge start, edge end, face link; the hash is symmetric in the ends.
+			for ( let r = 9 * i, end = r + 9; r < end; r += 3 ) {
 
-				if ( j === i ) continue;
-				const m0 = SLOT_PAIR[ 8 * i + 2 * j ], m1 = SLOT_PAIR[ 8 * i + 2 * j + 1 ];
-				let e0 = v[ k + m0 ], e1 = v[ k + m1 ];
-				if ( e0 > e1 ) { const s = e0; e0 = e1; e1 = s; }
-				let h = ( Math.imul( e0 + 2, 0x9E3779B1 ) ^ Math.imul( e1 + 2, 0x85EBCA77 ) ) & mask;
+				const j = FACE_EDGES[ r ];
+				const from = v[ k + FACE_EDGES[ r + 1 ] ], to = v[ k + FACE_EDGES[ r + 2 ] ];
+				let h = ( Math.imul( from, EDGE_HASH ) ^ Math.imul( to, EDGE_HASH ) ) >>> shift;
 				for ( ;; ) {
 
-					if ( used[ h ] !== edgeStamp ) {
+					const e = 4 * h;
+					if ( table[ e ] !== edgeStamp ) {
 
-						used[ h ] = edgeStamp;
-						keyA[ h ] = e0;
-						keyB[ h ] = e1;
-						value[ h ] = k + j;
+						table[ e ] = edgeStamp;
+						table[ e + 1 ] = from;
+						table[ e + 2 ] = to;
+						table[ e + 3 ] = k + j;
 						break;
 
 					}
 
-					if ( keyA[ h ] === e0 && keyB[ h ] === e1 ) {
+					// Each directed edge occurs once, so a matched entry is never looked up again.
+					if ( table[ e + 1 ] === to && table[ e + 2 ] === from ) {
 
-						const other = value[ h ];
+						const other = table[ e + 3 ];
 						adj[ k + j ] = other;
 						adj[ other ] = k + j;
-						// Each edge is shared by exactly two new cells; retire the entry.
-						keyA[ h ] = keyB[ h ] = FREE - 1;
 						break;
 
 					}
@@ -487,6 +504,24 @@ export class DelaunayBuilder {
 
 	}
 
+	/**
+	 * Replaces every finite vertex v of the cells by `ids[ v ]` and the points by `p` (which must hold
+	 * point `ids[ v ]` where the old points held v): for a triangulation built on renumbered points.
+	 */
+	renumber( ids: Uint32Array, p: Float64Array ): void {
+
+		const v = this.vertices;
+		for ( let k = 0, end = 4 * this.used; k < end; k ++ ) {
+
+			const w = v[ k ];
+			if ( w >= 0 ) v[ k ] = ids[ w ];
+
+		}
+
+		this.p = p;
+
+	}
+
 	/** Makes room for `count` more cells so that arrays stay put while new cells are linked. */
 	reserve( count: number ): void {
 
@@ -494,20 +529,11 @@ export class DelaunayBuilder {
 
 	}
 
-	private prepareEdgeTable( entries: number ): number {
+	/** The edge table with room for `size` entries of 4 ints (grown as needed, stamps kept). */
+	private prepareEdgeTable( size: number ): Int32Array {
 
-		let size = this.edgeStamp.length;
-		if ( size < entries * 2 ) {
-
-			while ( size < entries * 2 ) size *= 2;
-			this.edgeKeyA = new Int32Array( size );
-			this.edgeKeyB = new Int32Array( size );
-			this.edgeValue = new Int32Array( size );
-			this.edgeStamp = new Int32Array( size );
-
-		}
-
-		return size;
+		if ( this.edgeTable.length < 4 * size ) this.edgeTable = new Int32Array( 4 * size );
+		return this.edgeTable;
 
 	}
 
@@ -521,7 +547,7 @@ export class DelaunayBuilder {
 		this.p = new Float64Array( 0 );
 		this.vertices = this.adjacency = this.mark = this.freeList = empty;
 		this.cavity = this.boundary = this.created = this.stack = empty;
-		this.edgeKeyA = this.edgeKeyB = this.edgeValue = this.edgeStamp = empty;
+		this.edgeTable = empty;
 		this.used = this.capacity = this.freeCount = this.cavitySize = this.boundarySize = this.last = 0;
 		shapeKeeper = this;
 

@@ -152,7 +152,6 @@ export function insertAll(
 ): void {
 
 	const initial = findInitialTetrahedron( caller, p, indices, diagonal, planarTolerance );
-	builder.start( initial );
 
 	const rest = new Uint32Array( indices.length - 4 );
 	for ( let i = 0, j = 0; i < indices.length; i ++ ) {
@@ -163,7 +162,24 @@ export function insertAll(
 	}
 
 	const order = insertionOrder( p, rest, seed );
-	for ( let i = 0; i < order.length; i ++ ) builder.insert( order[ i ] );
+
+	// Build on a copy of the points renumbered in insertion order, so that the points of nearby
+	// cells are near in memory too; the predicates see the same coordinates, so the same cells.
+	const ids = new Uint32Array( indices.length );
+	ids.set( initial );
+	ids.set( order, 4 );
+	const local = new Float64Array( 3 * ids.length );
+	for ( let i = 0; i < ids.length; i ++ ) {
+
+		const k = 3 * ids[ i ];
+		local[ 3 * i ] = p[ k ]; local[ 3 * i + 1 ] = p[ k + 1 ]; local[ 3 * i + 2 ] = p[ k + 2 ];
+
+	}
+
+	builder.p = local;
+	builder.start( [ 0, 1, 2, 3 ] );
+	for ( let i = 4; i < ids.length; i ++ ) builder.insert( i );
+	builder.renumber( ids, p );
 
 }
 
