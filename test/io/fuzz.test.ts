@@ -11,7 +11,7 @@ import { GLTF_LIGHT_PROBE_VOLUME_EXTENSION, type GLTFLightProbeVolumeEntry } fro
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
-import { makeVolume, independentCheck, fixChecksum, fourCC } from './helpers.js';
+import { makeVolume, independentCheck, fixChecksum, fourCC, withGradients } from './helpers.js';
 import { installGLTFNodeStubs } from './gltfNodeStubs.js';
 
 /*
@@ -32,6 +32,7 @@ const sources = [
 	{ data: makeVolume( 85, 3 ), precision: 'float16' as const },
 	{ data: makeVolume( 200, 4, false ), precision: 'float32' as const },
 	{ data: makeVolume( 30, 5 ), precision: 'float16' as const },
+	{ data: withGradients( makeVolume( 8, 6 ), 7 ), precision: 'float16' as const },
 ];
 const files = sources.map( ( { data, precision } ) => new Uint8Array( encodeBakedVolume( data, { precision } ) ) );
 const originals = files.map( ( bytes ) => decodeBakedVolume( bytes.slice().buffer ) );
@@ -248,7 +249,7 @@ describe( 'baked volume loader fuzz', () => {
 
 const JSON_CASES = Number( process.env.BAKED_FUZZ_JSON_CASES ?? 2500 );
 const loader = new LightProbeVolumeLoader();
-const jsonTexts = [ makeVolume( 12, 2 ), makeVolume( 20, 4, false ), makeVolume( 30, 5 ) ]
+const jsonTexts = [ makeVolume( 12, 2 ), makeVolume( 20, 4, false ), makeVolume( 30, 5 ), withGradients( makeVolume( 6, 8 ), 9 ) ]
 	.map( ( volume ) => JSON.stringify( bakedVolumeToJSON( volume ) ) );
 const NUMBER = /-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?/g;
 const STRING = /"(?:[^"\\]|\\.)*"/g;

@@ -135,6 +135,16 @@ export function makeVolume( n: number, seed: number, extras = true ): BakedVolum
 
 }
 
+/** The volume with seeded gradients (81 per probe in [−1, 1)) and a fit record (version 1.1 sections). */
+export function withGradients<T extends BakedVolumeInput>( volume: T, seed: number ): T {
+
+	const random = mulberry32( seed );
+	const gradients = Float32Array.from( { length: 27 * volume.positions.length }, () => 2 * random() - 1 );
+	const fit = { samples: 500, gradients: true, lambda: 0.25, gradientLambda: 0.5, crossValidationError: 0.08, source: `seed ${seed}` };
+	return { ...volume, gradients, fit };
+
+}
+
 const ROLES = new Set( [ 'sky', 'bounce', 'bleed', 'fill' ] );
 
 /**
@@ -163,6 +173,28 @@ export function independentCheck( d: BakedVolumeData ): string | null {
 		for ( const p of zone.probes ) if ( ! ( p < n ) ) return 'zone probe';
 		if ( zone.bounds.length % 6 !== 0 || ! zone.bounds.every( Number.isFinite ) ) return 'zone bounds';
 		for ( let b = 0; b < zone.bounds.length; b += 6 ) if ( [ 0, 1, 2 ].some( ( k ) => ! ( zone.bounds[ b + k ] <= zone.bounds[ b + k + 3 ] ) ) ) return 'zone box';
+
+	}
+
+	// docs/format.md (1.1): gradients null or 81 per probe, finite, within 1e30 / the positions' box diagonal; a valid fit record.
+	if ( d.gradients !== null ) {
+
+		if ( d.gradients.length !== 81 * n ) return 'gradients length';
+		const low = [ 0, 1, 2 ].map( ( k ) => Math.min( ...d.positions.filter( ( _, i ) => i % 3 === k ) ) );
+		const high = [ 0, 1, 2 ].map( ( k ) => Math.max( ...d.positions.filter( ( _, i ) => i % 3 === k ) ) );
+		const diagonal = Math.hypot( high[ 0 ] - low[ 0 ], high[ 1 ] - low[ 1 ], high[ 2 ] - low[ 2 ] );
+		const bound = diagonal > 0 ? Math.min( Math.fround( 1e30 ) / diagonal, 3.4028234663852886e38 ) : 3.4028234663852886e38;
+		for ( const v of d.gradients ) if ( ! ( Math.abs( v ) <= bound ) ) return 'gradients finite and within the bound';
+
+	}
+
+	if ( d.fit !== null ) {
+
+		const f = d.fit;
+		if ( ! Number.isInteger( f.samples ) || f.samples < 0 || typeof f.gradients !== 'boolean' ) return 'fit samples, gradients';
+		if ( ! ( f.lambda >= 0 && f.gradientLambda >= 0 && Number.isFinite( f.lambda ) && Number.isFinite( f.gradientLambda ) ) ) return 'fit λ';
+		if ( f.crossValidationError !== null && ! ( f.crossValidationError >= 0 && Number.isFinite( f.crossValidationError ) ) ) return 'fit error';
+		if ( f.gradients && d.gradients === null ) return 'fit claims gradients';
 
 	}
 
