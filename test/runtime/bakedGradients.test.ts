@@ -1,7 +1,8 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { BakedVolumeError, LightProbeVolume } from '../../src/index.js';
-import { decodeBakedVolume, encodeBakedVolume, type BakedFit } from '../../src/format.js';
+import { decodeBakedVolume, encodeBakedVolume } from '../../src/format.js';
+import type { BakedFit } from '../../src/io/index.js';
 import { LightProbeVolumeExporter } from '../../src/runtime/LightProbeVolumeExporter.js';
 import { LightProbeVolumeLoader } from '../../src/runtime/LightProbeVolumeLoader.js';
 import { mulberry32 } from '../../src/tetrahedra/spatialOrder.js';
