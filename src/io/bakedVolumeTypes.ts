@@ -68,7 +68,7 @@ export interface BakedFit {
 	/** Strength of the pull toward zero gradient (scale-free), ≥ 0; 0 without gradients. */
 	gradientLambda: number;
 
-	/** Mean held-out error at the chosen λ (cross-validation), ≥ 0; null when λ were given. */
+	/** Mean `irradianceError` (a fraction of the mean irradiance) over the held-out folds at the chosen λ; null when λ were given. */
 	crossValidationError: number | null;
 
 	/** Free text: how the samples were made, e.g. 'dense captures at spacing 0.5'. */
