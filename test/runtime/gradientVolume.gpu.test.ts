@@ -41,7 +41,12 @@ function fieldVolume( gradients: boolean ): LightProbeVolume {
 
 	const positions: number[] = [];
 	for ( const x of [ - 12, 12 ] ) for ( const y of [ 2, 5 ] ) for ( const z of [ - 12, 12 ] ) positions.push( x, y, z );
-	for ( let i = 0; i < 16; i ++ ) positions.push( 9 * Math.sin( 3.1 * i + 1 ), 3.5 + 1.4 * Math.sin( 5.3 * i ), 9 * Math.cos( 2.3 * i + 0.5 ) );
+	for ( let i = 0; i < 16; i ++ ) {
+
+		positions.push( 9 * Math.sin( 3.1 * i + 1 ), 3.5 + 1.4 * Math.sin( 5.3 * i ), 9 * Math.cos( 2.3 * i + 0.5 ) );
+
+	}
+
 	const count = positions.length / 3, sh: number[] = [];
 	for ( let i = 0; i < count; i ++ ) sh.push( ...fieldSH( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] ) );
 	const g = gradients ? Array.from( { length: count }, () => B ).flat() : undefined;
