@@ -10,6 +10,6 @@ export {
 	encodeBakedVolume, decodeBakedVolume, bakedVolumeToJSON, bakedVolumeFromJSON, validateBakedVolume,
 	BAKED_VOLUME_JSON_FORMAT, BAKED_VOLUME_VERSION_MAJOR, BAKED_VOLUME_VERSION_MINOR,
 	type BakedVolumeData, type BakedVolumeInput, type BakedVolumeJSON, type BakedZone, type BakedCapture, type BakedCaptureSettings,
-	type BakedProbeRole, type EncodeBakedVolumeOptions,
+	type BakedProbeRole, type EncodeBakedVolumeOptions, type BakedFit,
 } from './io/index.js';
 export { BakedVolumeError, type BakedVolumeErrorCode } from './io/BakedVolumeError.js';

@@ -68,4 +68,5 @@ export type { GLTFLightProbeVolumeEntry } from './gltf/GLTFLightProbeVolumeExten
 export { DegenerateInputError } from './tetrahedra/tetrahedralize.js';
 export type { DegenerateReason } from './tetrahedra/tetrahedralize.js';
 export { BakedVolumeError } from './io/BakedVolumeError.js';
+export type { BakedFit } from './io/index.js';
 export type { BakedVolumeErrorCode } from './io/BakedVolumeError.js';
