@@ -118,7 +118,15 @@ export async function captureVolume(
 
 	const access = accessOf( where, volume );
 	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, options );
-	if ( indices.length > 0 ) access.commit( await captureProbes( volume, access.lit, indices, renderer, scene, { ...options, exclude } ) );
+	const fitting = await loadFitting( volume, access, ( options as { fit?: unknown } ).fit );
+	const plan = fitting?.planFit( where, volume, access, options, scene, hiddenObjects( access, exclude ) ) ?? null;
+	if ( indices.length === 0 && plan?.mode !== 'refit' ) return;
+	const points = plan?.points ?? null;
+	const captured = indices.length > 0 || points !== null
+		? await captureProbes( volume, access.lit, indices, renderer, scene, { ...options, exclude }, null, points )
+		: null;
+	if ( fitting !== null ) fitting.commitWithFit( plan!, volume, access, captured );
+	else if ( captured !== null ) access.commit( captured );
 
 }
 
@@ -159,7 +167,14 @@ export async function captureWithBounces(
 	// `exclude` is consumed twice (default mesh selection and every capture): an array, read once.
 	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, capture );
 	const checked = { ...capture, exclude };
+	const fitting = await loadFitting( volume, access, ( capture as { fit?: unknown } ).fit );
+	const plan = fitting?.planFit( where, volume, access, capture, scene, hiddenObjects( access, exclude ) ) ?? null;
+	const points = plan?.points ?? null;
 	const meshes = given ?? findStaticMeshes( volume, scene, checked );
+	// Scenery the volume lights itself (add( scene ), large objects) takes the bounce through its own lighting.
+	const bounced = bounces > 0 && ( meshes.length > 0 || access.lit.some( ( entry ) => ! entry.hidden ) );
+	// The fit points are captured once, in the last pass, with the light the probes get there.
+	const lastPass = bounced ? bounces : 0;
 	const start = now();
 	const passes: BouncePass[] = [];
 	// The SH as the passes make them; the volume gets the last pass once every pass is done.
@@ -168,7 +183,7 @@ export async function captureWithBounces(
 	const captureAndMeasure = async ( pass: number, lightingMs: number, scenery: ProbeField | null = null ) => {
 
 		const captureStart = now();
-		last = await captureProbes( volume, access.lit, indices, renderer, scene, checked, scenery );
+		last = await captureProbes( volume, access.lit, indices, renderer, scene, checked, scenery, pass === lastPass ? points : null );
 		applyCapturedProbes( last, staged );
 		passes.push( { pass, meanL00: meanL00( staged, capture.indices ), captureMs: now() - captureStart, lightingMs } );
 		onPass?.( pass, staged );
@@ -177,14 +192,9 @@ export async function captureWithBounces(
 
 	await captureAndMeasure( 0, 0 );
 	const vertices = meshes.reduce( ( sum, mesh ) => sum + ( mesh.geometry.getAttribute( 'position' )?.count ?? 0 ), 0 );
-	// Scenery the volume lights itself (add( scene ), large objects) takes the bounce through its own lighting.
-	if ( bounces > 0 && ( meshes.length > 0 || access.lit.some( ( entry ) => ! entry.hidden ) ) ) {
-
-		await bouncePasses( meshes, hidden, volume.interpolator, staged, output, bounces, captureAndMeasure );
-
-	}
-
-	access.commit( last! );
+	if ( bounced ) await bouncePasses( meshes, hidden, volume.interpolator, staged, output, bounces, captureAndMeasure );
+	if ( fitting !== null ) fitting.commitWithFit( plan!, volume, access, last );
+	else access.commit( last! );
 	return { passes, staticMeshes: meshes, vertices, totalMs: now() - start };
 
 }
@@ -247,6 +257,25 @@ async function bouncePasses(
 		hidden.forEach( ( object, i ) => { object.visible = visibility[ i ]; } );
 
 	}
+
+}
+
+/**
+ * The fitting module when this capture fits or refits — `options.fit` given, or the volume fitted
+ * before (it refits, or becomes plain) — else null. Loaded on demand, so a game that never fits
+ * does not ship it (it brings the placement tools for `fit.spacing`).
+ */
+async function loadFitting( volume: LightProbeVolume, access: CaptureAccess, fit: unknown ): Promise<typeof import( './fitVolume.js' ) | null> {
+
+	if ( fit === undefined && ( access.fit ?? null ) === null && volume.fitSettings === null ) return null;
+	return import( './fitVolume.js' );
+
+}
+
+/** What a capture hides: the volume's dynamic objects and `exclude`. */
+function hiddenObjects( access: CaptureAccess, exclude: readonly Object3D[] | undefined ): Object3D[] {
+
+	return [ ...access.lit.filter( ( entry ) => entry.hidden ).map( ( entry ) => entry.object ), ...( exclude ?? [] ) ];
 
 }
 

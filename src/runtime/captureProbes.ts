@@ -9,6 +9,7 @@ import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.j
 import type { LitObject } from './litObjects.js';
 import type { ProbeField } from './ProbeField.js';
 import { lightScenery, switchOffScenery } from './sceneryLight.js';
+import type { VolumeFit } from './VolumeFit.js';
 
 /** The fields of a `LightProbeVolume` that {@link captureProbes} reads (it writes nothing). */
 export interface CapturedVolume {
@@ -35,6 +36,12 @@ export interface CaptureAccess {
 	/** Puts a finished capture into the volume (SH, dirty set, capture settings), all at once. */
 	commit( captured: CapturedProbes ): void;
 
+	/**
+	 * The volume's fit store — captured SH and fit samples, kept so that a capture after an edit
+	 * refits — or null when the volume is not fitted; a fitting capture sets it.
+	 */
+	fit?: VolumeFit | null;
+
 }
 
 /** The result of {@link captureProbes}, not yet in the volume: {@link applyCapturedProbes} puts it there. */
@@ -52,7 +59,19 @@ export interface CapturedProbes {
 	/** The settings to store with a bake (`LightProbeVolume.captureSettings`). */
 	readonly settings: BakedCapture;
 
+	/** The SH of the extra points captured with the probes (27 floats each, e.g. a fit's samples), or null. */
+	readonly pointSH: Float32Array | null;
+
 }
+
+/**
+ * What reports a capture's progress: `done` of `total` probes of the stage — `'probes'` (each pass
+ * of the volume's probes) or `'fit'` (the points a `fit` capture fits the probes to).
+ */
+export type CaptureProgressCallback = ( done: number, total: number, stage: CaptureStage ) => void;
+
+/** The stages a capture reports in `onProgress`, in order: the probes (once per pass), then the fit points. */
+export type CaptureStage = 'probes' | 'fit';
 
 /**
  * One capture of a volume's probes (`LightProbeVolume.capture` without bounces): the probes of
@@ -61,13 +80,16 @@ export interface CapturedProbes {
  * volume (static props, large objects) stays visible with its probe light off — or, given
  * `scenery` (a bounce pass: the previous pass's probes), lit by those probes. Nothing of the volume changes: the result is staged, so a
  * capture that fails in any pass (a lost context, a throwing callback) leaves every probe as it was.
+ * Given `points`, captures them too, after the probes, with the common settings and the same
+ * hiding, scenery light and de-ringing (the samples a fit needs, seen as the probes see the scene).
  * @param options Checked by the caller (`checkVolumeCaptureOptions`); `exclude` an array.
  * @param scenery The probes that light the volume's scenery during this capture, or null (its probe light off).
+ * @param points x, y, z per extra point, or null.
  */
 export async function captureProbes(
 	volume: CapturedVolume, lit: readonly LitObject[], indices: readonly number[],
 	renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions & { exclude?: Object3D[] },
-	scenery: ProbeField | null = null,
+	scenery: ProbeField | null = null, points: Float64Array | null = null,
 ): Promise<CapturedProbes> {
 
 	// Probes whose role has its own settings (paper 3.4: sky, bounce and reflection captures
@@ -92,7 +114,15 @@ export async function captureProbes(
 	const exclude = [ ...lit.filter( ( entry ) => entry.hidden ).map( ( entry ) => entry.object ), ...( options.exclude ?? [] ) ];
 	const restoreScenery = scenery !== null ? lightScenery( lit, scenery ) : switchOffScenery( lit );
 	const total = order.length;
-	let done = 0;
+	const onProgress = options.onProgress as CaptureProgressCallback | undefined;
+	let done = 0, pointSH: Float32Array | null = null;
+	const finish = ( captured: Float32Array ) => {
+
+		if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
+		else if ( deringing > 0 ) windowSH( captured, deringing, captured );
+
+	};
+
 	try {
 
 		for ( const [ role, group ] of groups ) {
@@ -105,11 +135,29 @@ export async function captureProbes(
 				const groupPositions = positions.subarray( 3 * start, 3 * ( start + group.length ) );
 				const captured = sh.subarray( SH_FLOATS * start, SH_FLOATS * ( start + group.length ) );
 				await capturer.capture( scene, groupPositions, captured, {
-					...settings, exclude, onProgress: options.onProgress && ( ( n ) => options.onProgress!( start + n, total ) ),
+					...settings, exclude, onProgress: onProgress && ( ( n ) => onProgress( start + n, total, 'probes' ) ),
 				} );
-				if ( nonNegative ) makeIrradianceNonNegative( captured, deringing );
-				else if ( deringing > 0 ) windowSH( captured, deringing, captured );
+				finish( captured );
 				done += group.length;
+
+			} finally {
+
+				capturer.dispose();
+
+			}
+
+		}
+
+		if ( points !== null && points.length > 0 ) {
+
+			const capturer = new ProbeCapturer( renderer, options );
+			try {
+
+				const count = points.length / 3;
+				pointSH = await capturer.capture( scene, points, new Float32Array( SH_FLOATS * count ), {
+					...options, exclude, onProgress: onProgress && ( ( n ) => onProgress( n, count, 'fit' ) ),
+				} );
+				finish( pointSH );
 
 			} finally {
 
@@ -125,7 +173,7 @@ export async function captureProbes(
 
 	}
 
-	return { indices: order, positions, sh, settings: bakedCaptureSettings( options ) };
+	return { indices: order, positions, sh, settings: bakedCaptureSettings( options ), pointSH };
 
 }
 
