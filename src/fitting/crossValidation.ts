@@ -15,9 +15,6 @@ export interface CrossValidationInput {
 	/** 27 floats per sample. */
 	truth: Float64Array;
 
-	/** Irradiance rows of the truth (78 per sample). */
-	truthTable: Float64Array;
-
 	/** One > 0 per sample. */
 	weights: Float64Array;
 
@@ -57,14 +54,14 @@ export interface LambdaChoice {
  */
 export function chooseLambdas( input: CrossValidationInput ): LambdaChoice {
 
-	const { design, envelope, captured, truthTable, weights, scale } = input;
+	const { design, envelope, captured, truth, weights, scale } = input;
 	const count = design.count, folds = Math.min( input.folds, count );
 	const foldOf = assignFolds( count, folds, input.seed );
 	const heldOut: NormalEquations[] = [];
 	for ( let f = 0; f < folds; f ++ ) {
 
 		const equations = createNormalEquations( envelope );
-		accumulateNormalEquations( design, envelope, input.truth, weights, equations, foldOf, f );
+		accumulateNormalEquations( design, envelope, truth, weights, equations, foldOf, f );
 		heldOut.push( equations );
 
 	}
@@ -95,7 +92,7 @@ export function chooseLambdas( input: CrossValidationInput ): LambdaChoice {
 		for ( let f = 0; f < folds; f ++ ) {
 
 			const solution = solveRegularised( envelope, training[ f ], captured, design.stride, lambda, gradientLambda, scratch );
-			sum += weightedPredictionError( design, solution, truthTable, weights, scale, foldOf, f );
+			sum += weightedPredictionError( design, solution, truth, weights, scale, foldOf, f );
 
 		}
 

@@ -11,8 +11,8 @@ import type { SampleDesign } from './sampleDesign.js';
  * The non-negative step after a fit (docs/fitting.md): every probe's SH windowed until its
  * irradiance is ≥ 0 in every direction (makeIrradianceNonNegative), then each gradient probe's G
  * scaled by the largest t ∈ [0, 1] keeping c + t·G·d non-negative for every offset d it must
- * reach: to each probe it shares a cell with, and to each fit sample it blends. Irradiance is
- * affine in d, so the cell corners cover the whole cell.
+ * reach: to each probe it shares a cell with, and to each fit sample it blends outside such cells.
+ * Irradiance is affine in d, so the cell corners cover the whole cell.
  */
 
 // max over unit normals of |factor of coefficient b| in the irradiance (irradianceAt's c0 … c8):
@@ -40,7 +40,7 @@ export function makeFitNonNegative(
 	makeIrradianceNonNegative( sh );
 	if ( gradients === null ) return;
 	const neighbours = cellNeighbours( interpolator, design );
-	const touching = samplesOfProbes( design );
+	const touching = samplesOfProbes( design, ( j ) => ! insideLinkedCell( interpolator, design, samplePositions, j ) );
 	const offsets: number[] = [];
 	design.localToGlobal.forEach( ( i, t ) => {
 
@@ -202,12 +202,32 @@ function cellNeighbours( interpolator: ProbeInterpolator, design: SampleDesign )
 
 }
 
-/** Per local probe, the samples that give it weight. */
-function samplesOfProbes( design: SampleDesign ): number[][] {
+/**
+ * Whether sample j lies in a cell whose corners {@link cellNeighbours} links (an inner tetrahedron,
+ * a grid box): the checks at the corners already cover it, irradiance being affine in the offset.
+ */
+function insideLinkedCell( interpolator: ProbeInterpolator, design: SampleDesign, samplePositions: Float64Array, j: number ): boolean {
+
+	if ( interpolator instanceof TetrahedralMesh ) return design.cells[ j ] >= 0 && design.cells[ j ] < interpolator.cellCount;
+	if ( ! ( interpolator instanceof GridInterpolator ) ) return false;
+	for ( let a = 0; a < 3; a ++ ) {
+
+		const v = samplePositions[ 3 * j + a ];
+		if ( ! ( v >= interpolator.min[ a ] && v <= interpolator.max[ a ] ) ) return false;
+
+	}
+
+	return true;
+
+}
+
+/** Per local probe, the samples that give it weight and that `needsCheck` keeps. */
+function samplesOfProbes( design: SampleDesign, needsCheck: ( sample: number ) => boolean ): number[][] {
 
 	const touching = Array.from( { length: design.localToGlobal.length }, (): number[] => [] );
 	for ( let j = 0; j < design.count; j ++ ) {
 
+		if ( ! needsCheck( j ) ) continue;
 		for ( let s = 0; s < design.slots; s ++ ) {
 
 			const t = design.probes[ design.slots * j + s ];

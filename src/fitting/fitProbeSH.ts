@@ -3,8 +3,8 @@ import { checkFitArguments } from './checkFitArguments.js';
 import { chooseLambdas } from './crossValidation.js';
 import { createEnvelope } from './envelope.js';
 import { makeFitNonNegative } from './fitNonNegative.js';
-import { MEASURE_DIRECTIONS, irradianceTable, weightedMeanIrradiance } from './irradianceMeasure.js';
-import { SH_COLUMNS, accumulateNormalEquations, createNormalEquations } from './normalEquations.js';
+import { MEASURE_DIRECTIONS, weightedMeanIrradiance } from './irradianceMeasure.js';
+import { accumulateNormalEquations, createNormalEquations } from './normalEquations.js';
 import { weightedPredictionError } from './predictionError.js';
 import { buildSampleDesign, type SampleDesign } from './sampleDesign.js';
 import { createSolveScratch, solveRegularised } from './solveRegularised.js';
@@ -95,15 +95,14 @@ export function fitProbeSH(
 	const first = new Int32Array( stride * localToGlobal.length );
 	for ( let r = 0; r < first.length; r ++ ) first[ r ] = stride * design.firstNeighbour[ Math.floor( r / stride ) ];
 	const envelope = createEnvelope( first );
-	const captured = new Float64Array( SH_COLUMNS * localToGlobal.length );
+	const captured = new Float64Array( 27 * localToGlobal.length );
 	localToGlobal.forEach( ( i, t ) => {
 
-		for ( let k = 0; k < SH_COLUMNS; k ++ ) captured[ SH_COLUMNS * t + k ] = probeSH[ SH_COLUMNS * i + k ];
+		for ( let k = 0; k < 27; k ++ ) captured[ 27 * t + k ] = probeSH[ 27 * i + k ];
 
 	} );
 
-	const truthTable = irradianceTable( truth, design.count );
-	const meanIrradiance = weightedMeanIrradiance( truthTable, weights );
+	const meanIrradiance = weightedMeanIrradiance( truth, weights );
 	const scale = meanIrradiance > 0 ? 1 / ( MEASURE_DIRECTIONS * meanIrradiance ) : NaN;
 
 	let lambda = checked.lambda, gradientLambda = gradients ? checked.gradientLambda : 0;
@@ -118,7 +117,7 @@ export function fitProbeSH(
 
 		if ( design.count < 2 ) throw new RangeError( `${where}: choosing λ by cross-validation needs at least 2 samples of positive weight, got ${design.count}.` );
 		const choice = chooseLambdas( {
-			design, envelope, truth, truthTable, weights, captured, scale, lambda, gradientLambda, folds: checked.folds, seed: checked.seed,
+			design, envelope, truth, weights, captured, scale, lambda, gradientLambda, folds: checked.folds, seed: checked.seed,
 		} );
 		lambda = choice.lambda;
 		gradientLambda = choice.gradientLambda;
@@ -135,12 +134,12 @@ export function fitProbeSH(
 	const h = design.lengthScale;
 	localToGlobal.forEach( ( i, t ) => {
 
-		for ( let k = 0; k < SH_COLUMNS; k ++ ) sh[ SH_COLUMNS * i + k ] = solution[ SH_COLUMNS * stride * t + k ];
+		for ( let k = 0; k < 27; k ++ ) sh[ 27 * i + k ] = solution[ 27 * stride * t + k ];
 		if ( gradientField === null ) return;
 		for ( let a = 0; a < 3; a ++ ) {
 
-			const source = SH_COLUMNS * ( stride * t + 1 + a );
-			for ( let k = 0; k < SH_COLUMNS; k ++ ) gradientField[ 81 * i + 27 * a + k ] = solution[ source + k ] / h;
+			const source = 27 * ( stride * t + 1 + a );
+			for ( let k = 0; k < 27; k ++ ) gradientField[ 81 * i + 27 * a + k ] = solution[ source + k ] / h;
 
 		}
 
@@ -150,26 +149,26 @@ export function fitProbeSH(
 
 	return {
 		sh, gradients: gradientField, lambda, gradientLambda, crossValidationError,
-		fitError: storedFitError( design, sh, gradientField, truthTable, weights, scale ),
+		fitError: storedFitError( design, sh, gradientField, truth, weights, scale ),
 	};
 
 }
 
 /** The weighted mean error of the stored (float32, possibly non-negative) field over the samples. */
 function storedFitError(
-	design: SampleDesign, sh: Float32Array, gradients: Float32Array | null, truthTable: Float64Array, weights: Float64Array, scale: number,
+	design: SampleDesign, sh: Float32Array, gradients: Float32Array | null, truth: Float64Array, weights: Float64Array, scale: number,
 ): number {
 
 	const { stride, localToGlobal, lengthScale } = design;
-	const solution = new Float64Array( SH_COLUMNS * stride * localToGlobal.length );
+	const solution = new Float64Array( 27 * stride * localToGlobal.length );
 	localToGlobal.forEach( ( i, t ) => {
 
-		for ( let k = 0; k < SH_COLUMNS; k ++ ) solution[ SH_COLUMNS * stride * t + k ] = sh[ SH_COLUMNS * i + k ];
+		for ( let k = 0; k < 27; k ++ ) solution[ 27 * stride * t + k ] = sh[ 27 * i + k ];
 		if ( gradients === null ) return;
 		for ( let a = 0; a < 3; a ++ ) {
 
-			const target = SH_COLUMNS * ( stride * t + 1 + a );
-			for ( let k = 0; k < SH_COLUMNS; k ++ ) solution[ target + k ] = lengthScale * gradients[ 81 * i + 27 * a + k ];
+			const target = 27 * ( stride * t + 1 + a );
+			for ( let k = 0; k < 27; k ++ ) solution[ target + k ] = lengthScale * gradients[ 81 * i + 27 * a + k ];
 
 		}
 
@@ -177,6 +176,6 @@ function storedFitError(
 
 	let totalWeight = 0;
 	for ( let j = 0; j < weights.length; j ++ ) totalWeight += weights[ j ];
-	return weightedPredictionError( design, solution, truthTable, weights, scale ) / totalWeight;
+	return weightedPredictionError( design, solution, truth, weights, scale ) / totalWeight;
 
 }

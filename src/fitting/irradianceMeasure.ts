@@ -2,15 +2,12 @@ import { irradianceAt } from '../sh/irradiance.js';
 
 /**
  * The library's irradiance error measure (placement's `irradianceError`), rebuilt on src/sh so the
- * fit can judge held-out samples with it: the same 26 normals in the same order, the same
- * per-direction arithmetic, max over RGB, one global normaliser.
+ * fit can judge held-out samples with it: the same 26 normals, the same factors (from
+ * `irradianceAt`), max over RGB, mean over normals, one global normaliser.
  */
 
 /** Number of normals the measure uses. */
 export const MEASURE_DIRECTIONS = 26;
-
-/** Floats per point of an irradiance table: R, G, B at each of the 26 normals. */
-export const IRRADIANCE_ROW = 3 * MEASURE_DIRECTIONS;
 
 /**
  * The 26 normals of `irradianceError`: from the centre of a 3×3×3 block of cubes to each neighbour,
@@ -54,76 +51,69 @@ const basis: Float64Array = ( () => {
 
 } )();
 
-/**
- * Writes one SH's irradiance at the 26 normals (78 floats, `3k + channel`) to `out` at `outOffset`:
- * the numbers `evaluateIrradiance` gives.
- */
-export function irradianceRow( sh: ArrayLike<number>, shOffset: number, out: Float64Array, outOffset: number ): void {
+// The mean over the 26 normals of each coefficient's factor (odd band: 0, the normals pair up).
+const meanFactor = Float64Array.from( { length: 9 }, ( _, b ) => {
 
-	for ( let k = 0; k < MEASURE_DIRECTIONS; k ++ ) {
+	let sum = 0;
+	for ( let k = 0; k < MEASURE_DIRECTIONS; k ++ ) sum += basis[ 9 * k + b ];
+	return sum / MEASURE_DIRECTIONS;
+
+} );
+
+/**
+ * The error of one point whose predicted SH differs from the truth by `delta` (27 floats at
+ * `offset`): Σₖ maxᶜ |E_c(delta, nₖ)| · scale — placement's `pointIrradianceError` of the two
+ * irradiance rows, since irradiance is linear in the SH. The normals come in opposite pairs
+ * (k and 25 − k), so each pair shares its even bands and flips its odd band: half the products.
+ * @param scale 1 / (K · Ē).
+ */
+export function differenceError( delta: ArrayLike<number>, offset: number, scale: number ): number {
+
+	let sum = 0;
+	for ( let k = 0; k < MEASURE_DIRECTIONS / 2; k ++ ) {
 
 		const t = 9 * k;
 		const b0 = basis[ t ], b1 = basis[ t + 1 ], b2 = basis[ t + 2 ], b3 = basis[ t + 3 ], b4 = basis[ t + 4 ];
 		const b5 = basis[ t + 5 ], b6 = basis[ t + 6 ], b7 = basis[ t + 7 ], b8 = basis[ t + 8 ];
+		let plus = 0, minus = 0;
 		for ( let c = 0; c < 3; c ++ ) {
 
-			const s = shOffset + c;
-			out[ outOffset + 3 * k + c ] = b0 * sh[ s ] + b1 * sh[ s + 3 ] + b2 * sh[ s + 6 ] + b3 * sh[ s + 9 ]
-				+ b4 * sh[ s + 12 ] + b5 * sh[ s + 15 ] + b6 * sh[ s + 18 ] + b7 * sh[ s + 21 ] + b8 * sh[ s + 24 ];
+			const s = offset + c;
+			const even = b0 * delta[ s ] + b4 * delta[ s + 12 ] + b5 * delta[ s + 15 ] + b6 * delta[ s + 18 ]
+				+ b7 * delta[ s + 21 ] + b8 * delta[ s + 24 ];
+			const odd = b1 * delta[ s + 3 ] + b2 * delta[ s + 6 ] + b3 * delta[ s + 9 ];
+			const p = Math.abs( even + odd ), m = Math.abs( even - odd );
+			if ( p > plus ) plus = p;
+			if ( m > minus ) minus = m;
 
 		}
 
+		sum += plus + minus;
+
 	}
 
-}
-
-/** The irradiance table of `count` SH (27 floats each): {@link IRRADIANCE_ROW} floats per point. */
-export function irradianceTable( sh: ArrayLike<number>, count: number ): Float64Array {
-
-	const table = new Float64Array( IRRADIANCE_ROW * count );
-	for ( let p = 0; p < count; p ++ ) irradianceRow( sh, 27 * p, table, IRRADIANCE_ROW * p );
-	return table;
+	return sum * scale;
 
 }
 
 /**
- * The measure's normaliser Ē with sample weights: Σⱼ sⱼ · (mean of row j) / Σⱼ sⱼ — with all weights
- * 1 the mean of the whole table, as `irradianceError` takes it.
+ * The measure's normaliser Ē with sample weights: Σⱼ sⱼ · Ēⱼ / Σⱼ sⱼ, Ēⱼ the mean of sample j's
+ * irradiance over the 26 normals and 3 channels — with all weights 1 the mean `irradianceError`
+ * takes. Ēⱼ is linear in the SH: the normals' mean factor per coefficient.
+ * @param sh 27 floats per sample.
  */
-export function weightedMeanIrradiance( table: Float64Array, weights: Float64Array ): number {
+export function weightedMeanIrradiance( sh: ArrayLike<number>, weights: Float64Array ): number {
 
 	let sum = 0, weightSum = 0;
 	for ( let j = 0; j < weights.length; j ++ ) {
 
-		let row = 0;
-		for ( let i = IRRADIANCE_ROW * j, end = i + IRRADIANCE_ROW; i < end; i ++ ) row += table[ i ];
-		sum += weights[ j ] * row / IRRADIANCE_ROW;
+		let mean = 0;
+		for ( let b = 0, o = 27 * j; b < 9; b ++, o += 3 ) mean += meanFactor[ b ] * ( sh[ o ] + sh[ o + 1 ] + sh[ o + 2 ] );
+		sum += weights[ j ] * mean / 3;
 		weightSum += weights[ j ];
 
 	}
 
 	return sum / weightSum;
-
-}
-
-/**
- * One point's error, Σₖ maxᶜ |predicted − truth| · scale with scale = 1 / (K · Ē): placement's
- * `pointIrradianceError`.
- */
-export function pointError(
-	predicted: Float64Array, predictedOffset: number, truth: Float64Array, truthOffset: number, scale: number,
-): number {
-
-	let sum = 0;
-	for ( let k = 0; k < IRRADIANCE_ROW; k += 3 ) {
-
-		const a = predictedOffset + k, b = truthOffset + k;
-		const r = Math.abs( predicted[ a ] - truth[ b ] ), g = Math.abs( predicted[ a + 1 ] - truth[ b + 1 ] );
-		const bl = Math.abs( predicted[ a + 2 ] - truth[ b + 2 ] );
-		sum += r > g ? ( r > bl ? r : bl ) : ( g > bl ? g : bl );
-
-	}
-
-	return sum * scale;
 
 }

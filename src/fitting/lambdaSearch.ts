@@ -7,11 +7,14 @@
 /** Exponents of the coarse line search: 10^−6 … 10^3 in half decades, largest first. */
 const LINE_GRID = Array.from( { length: 19 }, ( _, i ) => 3 - 0.5 * i );
 
-/** Exponents of each coarse axis scan of the plane search: 10^−6 … 10^3 in decades, largest first. */
-const PLANE_GRID = Array.from( { length: 10 }, ( _, i ) => 3 - i );
+/** Exponents of each coarse axis scan of the plane search: 10^−5 … 10^2 in decades, largest first. */
+const PLANE_GRID = Array.from( { length: 8 }, ( _, i ) => 2 - i );
 
 /** Refinement steps, in decades. */
 const STEPS = [ 0.25, 0.125, 0.0625 ];
+
+/** Refinement steps of the plane search: each costs a fit per fold, four times (two axes, ±). */
+const PLANE_STEPS = [ 0.5, 0.25 ];
 
 /** The exponent e minimising `error( e )`: the coarse grid, then ± each refinement step from the best so far. */
 export function searchLine( error: ( exponent: number ) => number ): number {
@@ -51,8 +54,8 @@ export function searchLine( error: ( exponent: number ) => number ): number {
 
 /**
  * The exponents (e₁, e₂) minimising `error( e₁, e₂ )`: coarse scans along e₂ then e₁ (each over the
- * decade grid, the other exponent held), then ± half, quarter and eighth decades along each axis in
- * turn, moving whenever one improves — about 30 evaluations.
+ * decade grid, the other exponent held), then ± half and quarter decades along each axis in turn,
+ * moving whenever one improves — 24 evaluations.
  */
 export function searchPlane( error: ( first: number, second: number ) => number, start = - 2 ): [ number, number ] {
 
@@ -75,7 +78,7 @@ export function searchPlane( error: ( first: number, second: number ) => number,
 
 	}
 
-	for ( const step of [ 0.5, ...STEPS ] ) {
+	for ( const step of PLANE_STEPS ) {
 
 		for ( const axis of [ 1, 0 ] ) {
 

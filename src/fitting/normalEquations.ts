@@ -1,16 +1,13 @@
 import type { Envelope } from './envelope.js';
 import type { SampleDesign } from './sampleDesign.js';
 
-/** Columns of the right-hand side: the 27 SH floats, all fitted with the one matrix. */
-export const SH_COLUMNS = 27;
-
 /** The unnormalised normal equations of a sample set: Σ s·uuᵀ, Σ s·u·yᵀ and Σ s. */
 export interface NormalEquations {
 
 	/** Σⱼ sⱼ · uⱼ uⱼᵀ in envelope storage (uⱼ: sample j's design row). */
 	readonly matrix: Float64Array;
 
-	/** Σⱼ sⱼ · uⱼ yⱼᵀ, 27 columns per unknown. */
+	/** Σⱼ sⱼ · uⱼ yⱼᵀ, 27 columns per unknown (the SH floats, all fitted with the one matrix). */
 	readonly rhs: Float64Array;
 
 	/** Σⱼ sⱼ. */
@@ -21,7 +18,7 @@ export interface NormalEquations {
 /** Zeroed normal equations over `envelope`. */
 export function createNormalEquations( envelope: Envelope ): NormalEquations {
 
-	return { matrix: new Float64Array( envelope.length ), rhs: new Float64Array( SH_COLUMNS * envelope.size ), weightSum: 0 };
+	return { matrix: new Float64Array( envelope.length ), rhs: new Float64Array( 27 * envelope.size ), weightSum: 0 };
 
 }
 
@@ -42,7 +39,7 @@ export function accumulateNormalEquations(
 	for ( let j = 0; j < design.count; j ++ ) {
 
 		if ( folds !== null && folds[ j ] !== fold ) continue;
-		const s = weights[ j ], base = slots * j, y = SH_COLUMNS * j;
+		const s = weights[ j ], base = slots * j, y = 27 * j;
 		target.weightSum += s;
 		for ( let a = 0; a < slots; a ++ ) {
 
@@ -53,8 +50,8 @@ export function accumulateNormalEquations(
 				const ra = stride * pa + ua;
 				const xa = s * factors[ stride * ( base + a ) + ua ];
 				if ( xa === 0 ) continue;
-				const row = SH_COLUMNS * ra;
-				for ( let k = 0; k < SH_COLUMNS; k ++ ) rhs[ row + k ] += xa * truth[ y + k ];
+				const row = 27 * ra;
+				for ( let k = 0; k < 27; k ++ ) rhs[ row + k ] += xa * truth[ y + k ];
 				const rowBase = diagonal[ ra ] - ra;
 				// Every ordered slot pair adds to the lower triangle: a probe in two slots still sums right.
 				for ( let b = 0; b < slots; b ++ ) {

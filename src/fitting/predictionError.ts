@@ -1,21 +1,19 @@
-import { IRRADIANCE_ROW, irradianceRow, pointError } from './irradianceMeasure.js';
-import { SH_COLUMNS } from './normalEquations.js';
+import { differenceError } from './irradianceMeasure.js';
 import type { SampleDesign } from './sampleDesign.js';
 
-// Scratch for one sample's predicted SH and its irradiance row (one sample at a time).
-const predicted = new Float64Array( SH_COLUMNS );
-const predictedRow = new Float64Array( IRRADIANCE_ROW );
+// Scratch for one sample's predicted SH minus its truth.
+const difference = new Float64Array( 27 );
 
 /**
  * Σⱼ sⱼ · errorⱼ over the samples (all, or with `folds` those of fold `fold`), errorⱼ the library's
- * irradiance error of the field `solution` predicts at sample j against its true irradiance row.
+ * irradiance error of the field `solution` predicts at sample j against its captured SH.
  * @param solution `stride` unknowns per local probe, 27 floats each (as {@link solveRegularised} returns).
- * @param truthTable {@link IRRADIANCE_ROW} floats per sample.
+ * @param truth 27 floats per sample.
  * @param scale 1 / (K · Ē).
  * @param perSample Receives errorⱼ at index j when given.
  */
 export function weightedPredictionError(
-	design: SampleDesign, solution: Float64Array, truthTable: Float64Array, weights: Float64Array, scale: number,
+	design: SampleDesign, solution: Float64Array, truth: Float64Array, weights: Float64Array, scale: number,
 	folds: Uint8Array | null = null, fold = 0, perSample?: Float64Array,
 ): number {
 
@@ -24,7 +22,7 @@ export function weightedPredictionError(
 	for ( let j = 0; j < design.count; j ++ ) {
 
 		if ( folds !== null && folds[ j ] !== fold ) continue;
-		predicted.fill( 0 );
+		for ( let k = 0; k < 27; k ++ ) difference[ k ] = - truth[ 27 * j + k ];
 		for ( let s = 0; s < slots; s ++ ) {
 
 			const t = probes[ slots * j + s ];
@@ -33,15 +31,14 @@ export function weightedPredictionError(
 
 				const f = factors[ stride * ( slots * j + s ) + a ];
 				if ( f === 0 ) continue;
-				const source = SH_COLUMNS * ( stride * t + a );
-				for ( let k = 0; k < SH_COLUMNS; k ++ ) predicted[ k ] += f * solution[ source + k ];
+				const source = 27 * ( stride * t + a );
+				for ( let k = 0; k < 27; k ++ ) difference[ k ] += f * solution[ source + k ];
 
 			}
 
 		}
 
-		irradianceRow( predicted, 0, predictedRow, 0 );
-		const error = pointError( predictedRow, 0, truthTable, IRRADIANCE_ROW * j, scale );
+		const error = differenceError( difference, 0, scale );
 		if ( perSample !== undefined ) perSample[ j ] = error;
 		sum += weights[ j ] * error;
 

@@ -1,5 +1,8 @@
 import { hilbertIndex3 } from '../tetrahedra/spatialOrder.js';
+import { reverseCuthillMcKee } from './probeOrdering.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+
+const INDEX_RANGE = 1 << 23;
 
 /**
  * The design of a fit: for every sample, the probes the interpolator blends there and the factors
@@ -36,12 +39,15 @@ export interface SampleDesign {
 	/** h: the gradient unknowns are h · G, so they weigh like the SH (1 when there are no gradients). */
 	readonly lengthScale: number;
 
+	/** Per sample, the cell the interpolator returned (its `hint`). */
+	readonly cells: Int32Array;
+
 }
 
 /**
  * Interpolates every sample (visited along a Hilbert curve, each lookup starting from the last
  * one's cell) and builds the {@link SampleDesign}. Local probes are numbered in the order the
- * visit first reaches them, which keeps the normal matrix banded.
+ * visit first reaches them, then renumbered by reverse Cuthill–McKee, which keeps the normal matrix banded.
  * @param where Function name for error messages.
  * @param interpolator The runtime structure over the probes.
  * @param probePositions 3 per probe.
@@ -62,6 +68,7 @@ export function buildSampleDesign(
 	const globalToLocal = new Int32Array( probeCount ).fill( - 1 );
 	const localToGlobal: number[] = [];
 	const order = visitOrder( positions );
+	const cells = new Int32Array( count );
 	let hint = - 1, spread = 0;
 	for ( let v = 0; v < count; v ++ ) {
 
@@ -69,6 +76,7 @@ export function buildSampleDesign(
 		const x = positions[ 3 * j ], y = positions[ 3 * j + 1 ], z = positions[ 3 * j + 2 ];
 		values.fill( 0 );
 		hint = interpolator.interpolate( x, y, z, indices, values, hint );
+		cells[ j ] = hint;
 		for ( let s = 0; s < slots; s ++ ) {
 
 			const w = values[ s ], i = indices[ s ];
@@ -113,9 +121,18 @@ export function buildSampleDesign(
 	const rms = Math.sqrt( spread / totalWeight );
 	const lengthScale = gradients && rms > 0 && Number.isFinite( rms ) ? rms : 1;
 
+	// Renumber the local probes along the layout (reverse Cuthill–McKee) to narrow the band.
+	const numbering = reverseCuthillMcKee( sharedSamples( global, slots, globalToLocal, localToGlobal.length ) );
+	const renumbered = Uint32Array.from( numbering, ( old ) => localToGlobal[ old ] );
+	renumbered.forEach( ( i, t ) => {
+
+		globalToLocal[ i ] = t;
+
+	} );
+
 	const probes = new Int32Array( slots * count );
 	const factors = new Float64Array( stride * slots * count );
-	const firstNeighbour = Int32Array.from( localToGlobal, ( _, t ) => t );
+	const firstNeighbour = Int32Array.from( renumbered, ( _, t ) => t );
 	for ( let j = 0; j < count; j ++ ) {
 
 		const base = slots * j;
@@ -147,8 +164,33 @@ export function buildSampleDesign(
 
 	return {
 		count, slots, stride, probes, factors,
-		localToGlobal: Uint32Array.from( localToGlobal ), firstNeighbour, lengthScale,
+		localToGlobal: renumbered, firstNeighbour, lengthScale, cells,
 	};
+
+}
+
+/** Per first-touch local probe, the local probes it shares a sample with. */
+function sharedSamples( global: Int32Array, slots: number, globalToLocal: Int32Array, localCount: number ): number[][] {
+
+	const sets = Array.from( { length: localCount }, () => new Set<number>() );
+	for ( let base = 0; base < global.length; base += slots ) {
+
+		for ( let a = 0; a < slots; a ++ ) {
+
+			if ( global[ base + a ] < 0 ) continue;
+			const ta = globalToLocal[ global[ base + a ] ];
+			for ( let b = 0; b < slots; b ++ ) {
+
+				const tb = global[ base + b ] < 0 ? ta : globalToLocal[ global[ base + b ] ];
+				if ( tb !== ta ) sets[ ta ].add( tb );
+
+			}
+
+		}
+
+	}
+
+	return sets.map( ( set ) => [ ...set ].sort( ( a, b ) => a - b ) );
 
 }
 
@@ -167,8 +209,17 @@ function visitOrder( positions: Float64Array ): Uint32Array {
 
 	const cell = ( j: number, a: number ): number => max[ a ] > min[ a ]
 		? Math.round( ( positions[ 3 * j + a ] - min[ a ] ) / ( max[ a ] - min[ a ] ) * cells ) : 0;
+	// The key (30 bits) and the index (≤ 23 bits) packed in one double: a plain numeric sort, ties by index.
+	const packed = count < INDEX_RANGE;
 	const keys = new Float64Array( count );
-	for ( let j = 0; j < count; j ++ ) keys[ j ] = hilbertIndex3( cell( j, 0 ), cell( j, 1 ), cell( j, 2 ), bits );
+	for ( let j = 0; j < count; j ++ ) {
+
+		const key = hilbertIndex3( cell( j, 0 ), cell( j, 1 ), cell( j, 2 ), bits );
+		keys[ j ] = packed ? key * INDEX_RANGE + j : key;
+
+	}
+
+	if ( packed ) return Uint32Array.from( keys.sort(), ( k ) => k % INDEX_RANGE );
 	return Uint32Array.from( { length: count }, ( _, j ) => j ).sort( ( i, j ) => keys[ i ] - keys[ j ] || i - j );
 
 }

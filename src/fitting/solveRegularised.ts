@@ -1,6 +1,6 @@
 import { factorCholesky, solveCholesky } from './cholesky.js';
 import type { Envelope } from './envelope.js';
-import { SH_COLUMNS, type NormalEquations } from './normalEquations.js';
+import type { NormalEquations } from './normalEquations.js';
 
 /** Reusable buffers for {@link solveRegularised}: the factor and the solution. */
 export interface SolveScratch {
@@ -16,7 +16,7 @@ export interface SolveScratch {
 /** Buffers for systems over `envelope`. */
 export function createSolveScratch( envelope: Envelope ): SolveScratch {
 
-	return { matrix: new Float64Array( envelope.length ), solution: new Float64Array( SH_COLUMNS * envelope.size ) };
+	return { matrix: new Float64Array( envelope.length ), solution: new Float64Array( 27 * envelope.size ) };
 
 }
 
@@ -53,8 +53,8 @@ export function solveRegularised(
 			const gradient = r % stride !== 0;
 			matrix[ diagonal[ r ] ] += gradient ? pullG : pullC;
 			if ( gradient ) continue;
-			const row = SH_COLUMNS * r, source = SH_COLUMNS * ( r / stride );
-			for ( let k = 0; k < SH_COLUMNS; k ++ ) solution[ row + k ] += pullC * captured[ source + k ];
+			const row = 27 * r, source = 27 * ( r / stride );
+			for ( let k = 0; k < 27; k ++ ) solution[ row + k ] += pullC * captured[ source + k ];
 
 		}
 
@@ -64,7 +64,7 @@ export function solveRegularised(
 
 	}
 
-	solveCholesky( envelope, matrix, solution, SH_COLUMNS );
+	solveCholesky( envelope, matrix, solution, 27 );
 	return solution;
 
 }
