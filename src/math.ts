@@ -33,6 +33,7 @@ export { GridInterpolator } from './interpolation/GridInterpolator.js';
 export { PlanarMesh } from './interpolation/PlanarMesh.js';
 export { createProbeInterpolator } from './interpolation/createProbeInterpolator.js';
 export { blendSH } from './interpolation/blendSH.js';
+export { blendGradientSH } from './interpolation/blendGradientSH.js';
 
 export { TriangleBVH } from './geometry/TriangleBVH.js';
 export { intersectRayTriangle } from './geometry/intersectRayTriangle.js';

@@ -81,7 +81,8 @@ export class LightProbeVolume {
 	 * every blend (objects, vertices, texels, {@link LightProbeVolume.sample}) is Σ wᵢ · (cᵢ + Gᵢ · (q − pᵢ)) at its
 	 * point q; null (default) for plain probes. Set it with {@link LightProbeVolume.setGradients}; values written in
 	 * place are noticed like `sh`'s. Edits keep it in step (a moved or added probe's gradient is zero, a removed one's
-	 * too) and replace it when adding a probe; a capture leaves it as it is.
+	 * too) and replace it when adding a probe; a capture with `fit: { gradients: true }` sets it, a full capture
+	 * without `fit` clears it.
 	 */
 	gradients: Float32Array | null;
 
@@ -346,6 +347,8 @@ export class LightProbeVolume {
 		const where = 'LightProbeVolume.setGradients';
 		const next = gradients === null ? null : readGradients( where, 'gradients', gradients, this.positions, this.count );
 		this.gradients = this.edits.adoptGradients( next );
+		// Gradients set by hand make a record of fitted gradients untrue; the fit path sets its record after this call.
+		if ( next === null && this.fitSettings?.gradients === true ) this.fitSettings = null;
 		this.objects.probesChanged();
 		return this;
 
@@ -354,8 +357,9 @@ export class LightProbeVolume {
 	/**
 	 * Everything a baked file holds: positions, SH, the tetrahedralization (when the interpolator
 	 * is a {@link TetrahedralMesh}, so loading needs no re-tetrahedralization), names, roles, zones,
-	 * bounds, capture settings and metadata. The arrays are the volume's own, not copies — except
-	 * after `removeProbe()`, when the live probes are renumbered into new arrays.
+	 * bounds, capture settings, gradients, the fit record (`fitSettings`) and metadata. The arrays
+	 * are the volume's own, not copies — except after `removeProbe()`, when the live probes are
+	 * renumbered into new arrays.
 	 */
 	toBakedData(): BakedVolumeInput {
 
