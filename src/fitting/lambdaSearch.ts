@@ -4,19 +4,19 @@
  * fit), so a field every λ reproduces equally keeps its probes' captured values most.
  */
 
-/** Exponents of the coarse line search: 10^−6 … 10^3 in half decades, largest first. */
-const LINE_GRID = Array.from( { length: 19 }, ( _, i ) => 3 - 0.5 * i );
+/** Exponents of the coarse line search: 10^−6 … 10^3 in decades, largest first. */
+const LINE_GRID = Array.from( { length: 10 }, ( _, i ) => 3 - i );
 
 /** Exponents of each coarse axis scan of the plane search: 10^−5 … 10^2 in decades, largest first. */
 const PLANE_GRID = Array.from( { length: 8 }, ( _, i ) => 2 - i );
 
-/** Refinement steps, in decades. */
-const STEPS = [ 0.25, 0.125, 0.0625 ];
+/** Refinement steps of the line search, in decades. */
+const STEPS = [ 0.5, 0.25, 0.125 ];
 
-/** Refinement steps of the plane search: each costs a fit per fold, four times (two axes, ±). */
+/** Refinement steps of the plane search: each costs four fits per fold (two axes, ±). */
 const PLANE_STEPS = [ 0.5, 0.25 ];
 
-/** The exponent e minimising `error( e )`: the coarse grid, then ± each refinement step from the best so far. */
+/** The exponent e minimising `error( e )`: the coarse grid, then ± each refinement step from the best so far (16 evaluations). */
 export function searchLine( error: ( exponent: number ) => number ): number {
 
 	let best = LINE_GRID[ 0 ], bestError = error( best );

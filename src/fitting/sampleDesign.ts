@@ -169,10 +169,13 @@ export function buildSampleDesign(
 
 }
 
-/** Per first-touch local probe, the local probes it shares a sample with. */
+/** Per first-touch local probe, the local probes it shares a sample with, ascending. */
 function sharedSamples( global: Int32Array, slots: number, globalToLocal: Int32Array, localCount: number ): number[][] {
 
-	const sets = Array.from( { length: localCount }, () => new Set<number>() );
+	// A bit per probe pair while that fits in 2 MB, a set per probe beyond.
+	const bitmap = localCount <= 4096 ? new Uint8Array( Math.ceil( localCount * localCount / 8 ) ) : null;
+	const sets = bitmap === null ? Array.from( { length: localCount }, () => new Set<number>() ) : null;
+	const lists = Array.from( { length: localCount }, (): number[] => [] );
 	for ( let base = 0; base < global.length; base += slots ) {
 
 		for ( let a = 0; a < slots; a ++ ) {
@@ -181,8 +184,23 @@ function sharedSamples( global: Int32Array, slots: number, globalToLocal: Int32A
 			const ta = globalToLocal[ global[ base + a ] ];
 			for ( let b = 0; b < slots; b ++ ) {
 
-				const tb = global[ base + b ] < 0 ? ta : globalToLocal[ global[ base + b ] ];
-				if ( tb !== ta ) sets[ ta ].add( tb );
+				if ( global[ base + b ] < 0 ) continue;
+				const tb = globalToLocal[ global[ base + b ] ];
+				if ( tb === ta ) continue;
+				if ( bitmap !== null ) {
+
+					const bit = ta * localCount + tb;
+					if ( bitmap[ bit >> 3 ] & ( 1 << ( bit & 7 ) ) ) continue;
+					bitmap[ bit >> 3 ] |= 1 << ( bit & 7 );
+
+				} else {
+
+					if ( sets![ ta ].has( tb ) ) continue;
+					sets![ ta ].add( tb );
+
+				}
+
+				lists[ ta ].push( tb );
 
 			}
 
@@ -190,14 +208,15 @@ function sharedSamples( global: Int32Array, slots: number, globalToLocal: Int32A
 
 	}
 
-	return sets.map( ( set ) => [ ...set ].sort( ( a, b ) => a - b ) );
+	for ( const list of lists ) list.sort( ( x, y ) => x - y );
+	return lists;
 
 }
 
 /** Sample indices sorted along a 3D Hilbert curve over their bounding box (ties by index). */
 function visitOrder( positions: Float64Array ): Uint32Array {
 
-	const count = positions.length / 3, bits = 10, cells = ( 1 << bits ) - 1;
+	const count = positions.length / 3, bits = 7, cells = ( 1 << bits ) - 1;
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];
 	for ( let j = 0; j < count; j ++ ) for ( let a = 0; a < 3; a ++ ) {
 
@@ -209,7 +228,8 @@ function visitOrder( positions: Float64Array ): Uint32Array {
 
 	const cell = ( j: number, a: number ): number => max[ a ] > min[ a ]
 		? Math.round( ( positions[ 3 * j + a ] - min[ a ] ) / ( max[ a ] - min[ a ] ) * cells ) : 0;
-	// The key (30 bits) and the index (≤ 23 bits) packed in one double: a plain numeric sort, ties by index.
+	// 128³ cells order the lookups well enough; the key (21 bits) and the index (≤ 23 bits) packed in one
+	// double: a plain numeric sort, ties by index.
 	const packed = count < INDEX_RANGE;
 	const keys = new Float64Array( count );
 	for ( let j = 0; j < count; j ++ ) {
