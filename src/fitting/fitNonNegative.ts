@@ -208,7 +208,13 @@ function cellNeighbours( interpolator: ProbeInterpolator, design: SampleDesign )
  */
 function insideLinkedCell( interpolator: ProbeInterpolator, design: SampleDesign, samplePositions: Float64Array, j: number ): boolean {
 
-	if ( interpolator instanceof TetrahedralMesh ) return design.cells[ j ] >= 0 && design.cells[ j ] < interpolator.cellCount;
+	// Outer cells return cellCount + f; 'nearestFace' returns a tetrahedron for outside points too.
+	if ( interpolator instanceof TetrahedralMesh ) {
+
+		return interpolator.outside === 'outerCells' && design.cells[ j ] >= 0 && design.cells[ j ] < interpolator.cellCount;
+
+	}
+
 	if ( ! ( interpolator instanceof GridInterpolator ) ) return false;
 	for ( let a = 0; a < 3; a ++ ) {
 

@@ -141,6 +141,16 @@ describe( 'fitProbeSH: sample weights', () => {
 
 	} );
 
+	it( 'weights all ×10 give the same fit: λ does not depend on the weights\' scale', () => {
+
+		const heavy = { ...samples, weights: new Float64Array( 600 ).fill( 10 ) };
+		const a = fitProbeSH( mesh, probes, captured, heavy, options ), b = fitProbeSH( mesh, probes, captured, samples, options );
+		expect( maxDifference( a.sh, b.sh ) ).toBeLessThan( 1e-6 );
+		expect( maxDifference( a.gradients!, b.gradients! ) ).toBeLessThan( 1e-6 );
+		expect( a.fitError ).toBeCloseTo( b.fitError, 12 );
+
+	} );
+
 	it( 'a sample given twice equals the sample once with weight 2 (fixed λ); weights move the fit', () => {
 
 		const twice: FitSamples = {
