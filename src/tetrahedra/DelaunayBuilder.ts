@@ -8,32 +8,16 @@ export const INF = - 1;
 /** Marks a released cell slot (in its first vertex). */
 export const FREE = - 2;
 
-// FACE_EDGES[9i + 3r .. 9i + 3r + 2] = j, s1, s2 for the r-th slot j ≠ i: the face opposite j of a
-// positive tetrahedron, oriented so that vertex j is on its positive side, read as the cycle
-// (slot i, s1, s2). The neighbour across that face sees the same triangle in the opposite cycle, so
-// with i holding the new point both name the edge they share besides it, in opposite directions.
-const FACE_EDGES = new Int8Array( 36 );
-for ( let i = 0; i < 4; i ++ ) {
+/**
+ * Ints per cell record in `DelaunayBuilder.cells`: the four vertices, then the four face links.
+ * A link is the index of a face's entry in `cells` (`CELL · u + 4 + j`: face j of cell u), so the
+ * entry a link points at links back, `link >> CELL_SHIFT` is the cell, `link & 3` the slot, and
+ * `cells[ link − 4 ]` the vertex opposite the face.
+ */
+export const CELL = 8;
 
-	let r = 0;
-	for ( let j = 0; j < 4; j ++ ) {
-
-		if ( j === i ) continue;
-		const [ a, b, c ] = [ 0, 1, 2, 3 ].filter( ( m ) => m !== j );
-		// ( a, b, c, j ) is an even permutation of ( 0, 1, 2, 3 ) exactly when j is odd.
-		const cycle = j % 2 === 1 ? [ a, b, c ] : [ a, c, b ];
-		const at = cycle.indexOf( i );
-		FACE_EDGES[ 9 * i + 3 * r ] = j;
-		FACE_EDGES[ 9 * i + 3 * r + 1 ] = cycle[ ( at + 1 ) % 3 ];
-		FACE_EDGES[ 9 * i + 3 * r + 2 ] = cycle[ ( at + 2 ) % 3 ];
-		r ++;
-
-	}
-
-}
-
-// Multiplier of the edge hash (Knuth's multiplicative hashing; the high bits are kept).
-const EDGE_HASH = 0x9E3779B1;
+/** log2 of {@link CELL}. */
+export const CELL_SHIFT = 3;
 
 const _startCells = new Int32Array( 5 );
 const _startVertices = new Int32Array( 4 );
@@ -42,14 +26,15 @@ const _startVertices = new Int32Array( 4 );
  * Incremental Delaunay state in flat typed arrays, the insertion core shared by `tetrahedralize`
  * and `DynamicTetrahedralization` (internal: not exported from the package; docs/incremental-delaunay.md).
  *
- * Tetrahedron t has vertices `vertices[4t..4t+3]` (INF for the vertex at infinity) and
- * `adjacency[4t+i] = 4u + j`: the face opposite vertex i of t is the face opposite vertex j of u.
- * A ghost tetrahedron replaces one vertex of a hull face's outside by INF, ordered so that putting
- * any point beyond that face in INF's slot gives a positive tetrahedron; that makes "replace the
- * opposite vertex by the new point" valid for ghosts too.
+ * Cell t is the record `cells[8t..8t+7]`: vertices `cells[8t+i]` (INF for the vertex at infinity)
+ * and face links `cells[8t+4+i] = 8u + 4 + j`: the face opposite vertex i of t is the face opposite
+ * vertex j of u ({@link CELL}). One record per cell keeps a cell's vertices and neighbours in one
+ * cache line. A ghost tetrahedron replaces one vertex of a hull face's outside by INF, ordered so
+ * that putting any point beyond that face in INF's slot gives a positive tetrahedron; that makes
+ * "replace the opposite vertex by the new point" valid for ghosts too.
  *
- * `vertices` and `adjacency` are reallocated when the slot capacity grows (in `allocate` /
- * `reserve`): re-read them after any call that may create cells.
+ * `cells` is reallocated when the slot capacity grows (in `allocate` / `reserve`): re-read it after
+ * any call that may create cells.
  */
 export class DelaunayBuilder {
 
@@ -57,13 +42,11 @@ export class DelaunayBuilder {
 	p: Float64Array;
 	/** A length of the order of the point set's extent, for the coplanar in-circle test. */
 	extent: number;
-	/** Four vertices per cell slot; `vertices[4t] === FREE` for a released slot. */
-	vertices: Int32Array;
-	/** Face links per cell slot, `4u + j` (see the class comment). */
-	adjacency: Int32Array;
+	/** One record of {@link CELL} ints per cell slot (see the class comment); `cells[8t] === FREE` for a released slot. */
+	cells: Int32Array;
 	/** Number of slots in use or released (slots ≥ used were never allocated). */
 	used = 0;
-	/** Slot capacity of `vertices` / `adjacency`. */
+	/** Slot capacity of `cells`. */
 	capacity: number;
 	/** The cell the next point-location walk starts from. */
 	last = 0;
@@ -71,7 +54,7 @@ export class DelaunayBuilder {
 	/** Cells of the last conflict region (`findConflicts`), `cavitySize` of them. */
 	cavity = new Int32Array( 256 );
 	cavitySize = 0;
-	/** Boundary faces of the last conflict region as `4t + i` (t in the cavity), `boundarySize` of them. */
+	/** Boundary faces of the last conflict region as links `8t + 4 + i` (t in the cavity), `boundarySize` of them. */
 	boundary = new Int32Array( 256 );
 	boundarySize = 0;
 	/** Cells created by the last `fillConflicts`, one per boundary face (`boundarySize` of them). */
@@ -94,8 +77,7 @@ export class DelaunayBuilder {
 		this.p = p;
 		this.extent = diagonal;
 		this.capacity = Math.max( 64, Math.ceil( pointCount * 7.5 ) );
-		this.vertices = new Int32Array( 4 * this.capacity );
-		this.adjacency = new Int32Array( 4 * this.capacity );
+		this.cells = new Int32Array( CELL * this.capacity );
 		this.mark = new Int32Array( this.capacity );
 		this.freeList = new Int32Array( 64 );
 
@@ -133,6 +115,7 @@ export class DelaunayBuilder {
 		}
 
 		// Five cells, linked by comparing their faces; done once per triangulation, so brute force is fine.
+		const record = this.cells;
 		for ( let x = 0; x < 5; x ++ ) {
 
 			const u = cells[ x ];
@@ -144,7 +127,7 @@ export class DelaunayBuilder {
 					if ( w === u ) continue;
 					for ( let j = 0; j < 4; j ++ ) {
 
-						if ( this.sameFace( u, i, w, j ) ) this.adjacency[ 4 * u + i ] = 4 * w + j;
+						if ( this.sameFace( u, i, w, j ) ) record[ CELL * u + 4 + i ] = CELL * w + 4 + j;
 
 					}
 
@@ -161,13 +144,13 @@ export class DelaunayBuilder {
 	private sameFace( u: number, i: number, w: number, j: number ): boolean {
 
 		// Vertices within a cell are distinct, so two triples are equal when each of one is in the other.
-		const v = this.vertices;
+		const v = this.cells;
 		for ( let k = 0; k < 4; k ++ ) {
 
 			if ( k === i ) continue;
-			const x = v[ 4 * u + k ];
+			const x = v[ CELL * u + k ];
 			let found = false;
-			for ( let m = 0; m < 4; m ++ ) if ( m !== j && v[ 4 * w + m ] === x ) found = true;
+			for ( let m = 0; m < 4; m ++ ) if ( m !== j && v[ CELL * w + m ] === x ) found = true;
 			if ( ! found ) return false;
 
 		}
@@ -178,7 +161,7 @@ export class DelaunayBuilder {
 
 	private setVertices( t: number, a: number, b: number, c: number, d: number ): void {
 
-		const v = this.vertices, k = 4 * t;
+		const v = this.cells, k = CELL * t;
 		v[ k ] = a; v[ k + 1 ] = b; v[ k + 2 ] = c; v[ k + 3 ] = d;
 
 	}
@@ -197,15 +180,14 @@ export class DelaunayBuilder {
 
 		if ( this.freeCount === this.freeList.length ) this.freeList = growInt32( this.freeList, this.freeList.length * 2 );
 		this.freeList[ this.freeCount ++ ] = t;
-		this.vertices[ 4 * t ] = FREE;
+		this.cells[ CELL * t ] = FREE;
 
 	}
 
 	private grow(): void {
 
 		const capacity = this.capacity * 2;
-		this.vertices = growInt32( this.vertices, 4 * capacity );
-		this.adjacency = growInt32( this.adjacency, 4 * capacity );
+		this.cells = growInt32( this.cells, CELL * capacity );
 		this.mark = growInt32( this.mark, capacity );
 		this.capacity = capacity;
 
@@ -214,7 +196,7 @@ export class DelaunayBuilder {
 	/** True when slot t is a ghost cell (one vertex is INF). */
 	isGhost( t: number ): boolean {
 
-		const v = this.vertices, k = 4 * t;
+		const v = this.cells, k = CELL * t;
 		return v[ k ] === INF || v[ k + 1 ] === INF || v[ k + 2 ] === INF || v[ k + 3 ] === INF;
 
 	}
@@ -227,13 +209,13 @@ export class DelaunayBuilder {
 	 */
 	locate( q: number ): number {
 
-		const v = this.vertices, adj = this.adjacency, p = this.p, random = this.random;
+		const v = this.cells, p = this.p, random = this.random;
 		let t = this.last;
-		if ( t >= this.used || v[ 4 * t ] === FREE ) t = 0;
-		while ( v[ 4 * t ] === FREE ) t ++;
+		if ( t >= this.used || v[ CELL * t ] === FREE ) t = 0;
+		while ( v[ CELL * t ] === FREE ) t ++;
 		if ( this.isGhost( t ) ) {
 
-			for ( let i = 0; i < 4; i ++ ) if ( v[ 4 * t + i ] === INF ) t = adj[ 4 * t + i ] >> 2;
+			for ( let i = 0; i < 4; i ++ ) if ( v[ CELL * t + i ] === INF ) t = v[ CELL * t + 4 + i ] >> CELL_SHIFT;
 
 		}
 
@@ -244,12 +226,12 @@ export class DelaunayBuilder {
 			r ^= r << 13; r ^= r >>> 17; r ^= r << 5;
 			random[ 0 ] = r;
 			const offset = r & 3;
-			const k = 4 * t;
+			const k = CELL * t;
 			const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 			for ( let s = 0; s < 4; s ++ ) {
 
 				const i = ( offset + s ) & 3;
-				const next = adj[ k + i ] >> 2;
+				const next = v[ k + 4 + i ] >> CELL_SHIFT;
 				if ( next === previous ) continue;
 				let o: number;
 				if ( i === 0 ) o = orient( p, q, b, c, d );
@@ -271,13 +253,13 @@ export class DelaunayBuilder {
 
 		}
 
-		return scanForCell( this.p, this.vertices, this.used, q );
+		return scanForCell( this.p, this.cells, this.used, q );
 
 	}
 
 	private inConflict( t: number, q: number ): boolean {
 
-		const v = this.vertices, p = this.p, k = 4 * t;
+		const v = this.cells, p = this.p, k = CELL * t;
 		const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 		if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
 
@@ -346,7 +328,7 @@ export class DelaunayBuilder {
 		// Flood the conflict region (connected, star-shaped from q) and collect its boundary faces.
 		// The scratch arrays live in locals (written back when grown) to keep the loop free of
 		// property loads; finite cells call inSphere directly, ghosts go through inConflict.
-		const adj = this.adjacency, v = this.vertices, p = this.p;
+		const v = this.cells, p = this.p;
 		let stack = this.stack, cavity = this.cavity, boundary = this.boundary;
 		let stackSize = 0, cavitySize = 0, boundarySize = 0;
 		mark[ start ] = inStamp;
@@ -356,16 +338,16 @@ export class DelaunayBuilder {
 			const t = stack[ -- stackSize ];
 			if ( cavitySize === cavity.length ) this.cavity = cavity = growInt32( cavity, cavitySize * 2 );
 			cavity[ cavitySize ++ ] = t;
-			const t4 = 4 * t;
+			const faces = CELL * t + 4;
 			for ( let i = 0; i < 4; i ++ ) {
 
-				const u = adj[ t4 + i ] >> 2;
+				const u = v[ faces + i ] >> CELL_SHIFT;
 				const m = mark[ u ];
 				if ( m === inStamp ) continue;
 				let conflict = false;
 				if ( m !== outStamp ) {
 
-					const k = 4 * u;
+					const k = CELL * u;
 					const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 					if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
 
@@ -390,7 +372,7 @@ export class DelaunayBuilder {
 
 					mark[ u ] = outStamp;
 					if ( boundarySize === boundary.length ) this.boundary = boundary = growInt32( boundary, boundarySize * 2 );
-					boundary[ boundarySize ++ ] = t4 + i;
+					boundary[ boundarySize ++ ] = faces + i;
 
 				}
 
@@ -414,8 +396,7 @@ export class DelaunayBuilder {
 		// One new cell per boundary face: the conflict cell with its vertex opposite that face
 		// replaced by q, which keeps the orientation (q sees the face from the same side).
 		this.reserve( boundarySize );
-		const v = this.vertices;
-		const adj = this.adjacency;
+		const v = this.cells;
 		if ( this.created.length < boundarySize ) this.created = new Int32Array( boundarySize * 2 );
 		const created = this.created, boundary = this.boundary;
 		// 1.5 entries per boundary face (half of the 3 lookups insert) in at least 8 slots per face,
@@ -427,28 +408,35 @@ export class DelaunayBuilder {
 		const edgeStamp = ++ this.stamp;
 		// Slots as `allocate` hands them out (free list first, LIFO), inlined: `reserve` made room.
 		const freeList = this.freeList;
-		let freeCount = this.freeCount;
+		let freeCount = this.freeCount, used = this.used;
 		for ( let f = 0; f < boundarySize; f ++ ) {
 
 			const face = boundary[ f ];
-			const t = face >> 2, i = face & 3;
-			const outside = adj[ face ];
-			const n = freeCount > 0 ? freeList[ -- freeCount ] : this.used ++;
-			const k = 4 * n, t4 = 4 * t;
-			v[ k ] = v[ t4 ]; v[ k + 1 ] = v[ t4 + 1 ]; v[ k + 2 ] = v[ t4 + 2 ]; v[ k + 3 ] = v[ t4 + 3 ];
+			const i = face & 3, t8 = face - 4 - i;
+			const outside = v[ face ];
+			const n = freeCount > 0 ? freeList[ -- freeCount ] : used ++;
+			const k = CELL * n;
+			v[ k ] = v[ t8 ]; v[ k + 1 ] = v[ t8 + 1 ]; v[ k + 2 ] = v[ t8 + 2 ]; v[ k + 3 ] = v[ t8 + 3 ];
 			v[ k + i ] = q;
-			adj[ k + i ] = outside;
-			adj[ outside ] = k + i;
+			v[ k + 4 + i ] = outside;
+			v[ outside ] = k + 4 + i;
 			created[ f ] = n;
 
 			// The three faces through q are shared with other new cells; pair them by the edge they
-			// have besides q, which the two cells name in opposite directions (FACE_EDGES). Entries
-			// are 4 ints: stamp, edge start, edge end, face link; the hash is symmetric in the ends.
-			for ( let r = 9 * i, end = r + 9; r < end; r += 3 ) {
+			// have besides q, in a hash table of 4 ints per entry (stamp, edge start, edge end, face
+			// link) with a hash symmetric in the ends. With x1, x2, x3 the vertices in slots i + 1,
+			// i + 2, i + 3 (mod 4), the face opposite slot i + r has the edge (x2, x3), (x3, x1),
+			// (x1, x2) for r = 1, 2, 3 oriented as the face seen with q first (reversed for odd i: a
+			// rotation of the slots by an odd i is an odd permutation); the cell across the face names
+			// the same edge in the opposite direction, which is what is looked up.
+			let x1 = v[ k + ( ( i + 1 ) & 3 ) ], x2 = v[ k + ( ( i + 2 ) & 3 ) ], x3 = v[ k + ( ( i + 3 ) & 3 ) ];
+			const odd = ( i << 31 ) >> 31; // −1 for odd i, else 0
+			for ( let r = 1; r <= 3; r ++ ) {
 
-				const j = FACE_EDGES[ r ];
-				const from = v[ k + FACE_EDGES[ r + 1 ] ], to = v[ k + FACE_EDGES[ r + 2 ] ];
-				let h = ( Math.imul( from, EDGE_HASH ) ^ Math.imul( to, EDGE_HASH ) ) >>> shift;
+				const link = k + 4 + ( ( i + r ) & 3 );
+				const from = x2 ^ ( ( x2 ^ x3 ) & odd ), to = x2 ^ x3 ^ from;
+				const rest = x1; x1 = x2; x2 = x3; x3 = rest;
+				let h = ( Math.imul( from, - 1640531535 ) ^ Math.imul( to, - 1640531535 ) ) >>> shift;
 				for ( ;; ) {
 
 					const e = 4 * h;
@@ -457,7 +445,7 @@ export class DelaunayBuilder {
 						table[ e ] = edgeStamp;
 						table[ e + 1 ] = from;
 						table[ e + 2 ] = to;
-						table[ e + 3 ] = k + j;
+						table[ e + 3 ] = link;
 						break;
 
 					}
@@ -466,8 +454,8 @@ export class DelaunayBuilder {
 					if ( table[ e + 1 ] === to && table[ e + 2 ] === from ) {
 
 						const other = table[ e + 3 ];
-						adj[ k + j ] = other;
-						adj[ other ] = k + j;
+						v[ link ] = other;
+						v[ other ] = link;
 						break;
 
 					}
@@ -479,6 +467,8 @@ export class DelaunayBuilder {
 			}
 
 		}
+
+		this.used = used;
 
 		// Release the region's cells (as `release` does, in the same order).
 		this.freeCount = freeCount;
@@ -495,7 +485,7 @@ export class DelaunayBuilder {
 
 			const t = cavity[ c ];
 			list[ freeCount ++ ] = t;
-			v[ 4 * t ] = FREE;
+			v[ CELL * t ] = FREE;
 
 		}
 
@@ -510,11 +500,15 @@ export class DelaunayBuilder {
 	 */
 	renumber( ids: Uint32Array, p: Float64Array ): void {
 
-		const v = this.vertices;
-		for ( let k = 0, end = 4 * this.used; k < end; k ++ ) {
+		const v = this.cells;
+		for ( let k = 0, end = CELL * this.used; k < end; k += CELL ) {
 
-			const w = v[ k ];
-			if ( w >= 0 ) v[ k ] = ids[ w ];
+			for ( let i = k; i < k + 4; i ++ ) {
+
+				const w = v[ i ];
+				if ( w >= 0 ) v[ i ] = ids[ w ];
+
+			}
 
 		}
 
@@ -545,7 +539,7 @@ export class DelaunayBuilder {
 
 		const empty = new Int32Array( 0 );
 		this.p = new Float64Array( 0 );
-		this.vertices = this.adjacency = this.mark = this.freeList = empty;
+		this.cells = this.mark = this.freeList = empty;
 		this.cavity = this.boundary = this.created = this.stack = empty;
 		this.edgeTable = empty;
 		this.used = this.capacity = this.freeCount = this.cavitySize = this.boundarySize = this.last = 0;

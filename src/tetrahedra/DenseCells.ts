@@ -1,4 +1,4 @@
-import { type DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
+import { CELL, CELL_SHIFT, type DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
 import { growInt32, growUint32 } from './growArrays.js';
 
 /**
@@ -210,7 +210,7 @@ export class DenseCells {
 	/** Rewrites the dense arrays of every changed cell and its neighbours, and returns the edit. */
 	endEdit( rebuilt: boolean ): TetrahedralEdit {
 
-		const v = this.builder.vertices, adj = this.builder.adjacency, index = this.cellIndex;
+		const v = this.builder.cells, index = this.cellIndex;
 		const report = this.reportStamp, stamp = this.editStamp;
 		if ( this.changedCells.length < this.dirtyCount ) this.changedCells = new Int32Array( 2 * this.dirtyCount );
 		if ( this.changedHullFaces.length < 5 * this.dirtyCount ) this.changedHullFaces = new Int32Array( 10 * this.dirtyCount );
@@ -218,7 +218,7 @@ export class DenseCells {
 		for ( let d = 0; d < this.dirtyCount; d ++ ) {
 
 			const slot = this.dirty[ d ];
-			if ( v[ 4 * slot ] === FREE || index[ slot ] === - 1 ) continue;
+			if ( v[ CELL * slot ] === FREE || index[ slot ] === - 1 ) continue;
 			this.writeSlot( slot );
 			const c = index[ slot ];
 			if ( c >= 0 ) this.changedCells[ changed ++ ] = c;
@@ -226,7 +226,7 @@ export class DenseCells {
 
 			for ( let i = 0; i < 4; i ++ ) {
 
-				const u = adj[ 4 * slot + i ] >> 2;
+				const u = v[ CELL * slot + 4 + i ] >> CELL_SHIFT;
 				this.writeSlot( u );
 				const cu = index[ u ];
 				if ( cu <= - 2 && report[ u ] !== stamp ) { report[ u ] = stamp; this.changedHullFaces[ changedHull ++ ] = - cu - 2; }
@@ -251,14 +251,14 @@ export class DenseCells {
 	/** Writes one live cell's dense entries from its slot. */
 	private writeSlot( slot: number ): void {
 
-		const v = this.builder.vertices, adj = this.builder.adjacency, index = this.cellIndex;
+		const v = this.builder.cells, index = this.cellIndex;
 		const c = index[ slot ];
 		if ( c >= 0 ) {
 
 			for ( let i = 0; i < 4; i ++ ) {
 
-				this.tetrahedra[ 4 * c + i ] = v[ 4 * slot + i ];
-				const n = index[ adj[ 4 * slot + i ] >> 2 ];
+				this.tetrahedra[ 4 * c + i ] = v[ CELL * slot + i ];
+				const n = index[ v[ CELL * slot + 4 + i ] >> CELL_SHIFT ];
 				this.neighbors[ 4 * c + i ] = n >= 0 ? n : - 1;
 
 			}
@@ -267,8 +267,8 @@ export class DenseCells {
 
 			const h = - c - 2;
 			let g = 0;
-			while ( v[ 4 * slot + g ] !== INF ) g ++;
-			const face = adj[ 4 * slot + g ], t = face >> 2, i = face & 3, k = 4 * t;
+			while ( v[ CELL * slot + g ] !== INF ) g ++;
+			const face = v[ CELL * slot + 4 + g ], t = face >> CELL_SHIFT, i = face & 3, k = CELL * t;
 			// Counter-clockwise from outside: the face without vertex i of the positive tetrahedron t,
 			// ordered so that vertex i is on its negative side (TetrahedralMesh's convention).
 			let a: number, b: number, d: number;

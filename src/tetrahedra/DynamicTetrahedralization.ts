@@ -1,5 +1,5 @@
 import { assertCoordinates, assertInteger } from '../validate.js';
-import { DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
+import { CELL, CELL_SHIFT, DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
 import { DenseCells, type TetrahedralEdit } from './DenseCells.js';
 import { PointStore } from './PointStore.js';
 import { buildDelaunay, DegenerateInputError, insertAll, readOptions, type TetrahedralizeOptions } from './tetrahedralize.js';
@@ -309,14 +309,14 @@ export class DynamicTetrahedralization {
 		builder.findConflicts( q, builder.locate( q ) );
 
 		// q's nearest point is a vertex of its conflict region (it is a Delaunay neighbour of q).
-		const v = builder.vertices, p = this.p;
+		const v = builder.cells, p = this.p;
 		const x = p[ 3 * q ], y = p[ 3 * q + 1 ], z = p[ 3 * q + 2 ];
 		for ( let c = 0; c < builder.cavitySize; c ++ ) {
 
 			const t = builder.cavity[ c ];
 			for ( let i = 0; i < 4; i ++ ) {
 
-				const w = v[ 4 * t + i ];
+				const w = v[ CELL * t + i ];
 				if ( w === INF || w === ignore ) continue;
 				if ( this.points.within( p[ 3 * w ] - x, p[ 3 * w + 1 ] - y, p[ 3 * w + 2 ] - z, 1 ) ) this.throwDuplicate( where, q, w );
 
@@ -348,14 +348,14 @@ export class DynamicTetrahedralization {
 		cells.removedCount += builder.cavitySize;
 		cells.createdCount += builder.boundarySize;
 		cells.ensureSlotCapacity();
-		const v = builder.vertices;
+		const v = builder.cells;
 		for ( let c = 0; c < builder.boundarySize; c ++ ) {
 
 			const t = builder.created[ c ];
 			cells.addSlot( t );
 			for ( let i = 0; i < 4; i ++ ) {
 
-				const w = v[ 4 * t + i ];
+				const w = v[ CELL * t + i ];
 				if ( w !== INF ) this.vertexCell[ w ] = t;
 
 			}
@@ -465,13 +465,14 @@ export class DynamicTetrahedralization {
 		const cells = this.cells;
 		cells.reset( builder );
 		this.vertexCell.fill( - 1 );
-		const v = builder.vertices;
+		const v = builder.cells;
 		for ( let t = 0; t < builder.used; t ++ ) {
 
-			if ( v[ 4 * t ] === FREE ) continue;
+			const k = CELL * t;
+			if ( v[ k ] === FREE ) continue;
 			cells.addSlot( t );
 			cells.createdCount ++;
-			for ( let i = 0; i < 4; i ++ ) if ( v[ 4 * t + i ] !== INF ) this.vertexCell[ v[ 4 * t + i ] ] = t;
+			for ( let i = k; i < k + 4; i ++ ) if ( v[ i ] !== INF ) this.vertexCell[ v[ i ] ] = t;
 
 		}
 

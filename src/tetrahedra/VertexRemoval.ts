@@ -1,5 +1,5 @@
 import { coplanarOrient, orient } from './predicates.js';
-import { DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
+import { CELL, CELL_SHIFT, DelaunayBuilder, FREE, INF } from './DelaunayBuilder.js';
 import type { DenseCells } from './DenseCells.js';
 import { FaceTable } from './FaceTable.js';
 import { growInt32, growUint32 } from './growArrays.js';
@@ -93,12 +93,12 @@ export class VertexRemoval {
 		builder.reserve( fillCount );
 		cells.ensureSlotCapacity();
 		if ( this.fillSlots.length < fillCount ) this.fillSlots = new Int32Array( 2 * fillCount );
-		const v = builder.vertices, adj = builder.adjacency, fill = this.fill, links = this.fillLinks, slots = this.fillSlots;
+		const v = builder.cells, fill = this.fill, links = this.fillLinks, slots = this.fillSlots;
 		for ( let n = 0; n < fillCount; n ++ ) {
 
 			const t = builder.allocate();
 			slots[ n ] = t;
-			for ( let i = 0; i < 4; i ++ ) v[ 4 * t + i ] = fill[ 4 * n + i ];
+			for ( let i = 0; i < 4; i ++ ) v[ CELL * t + i ] = fill[ 4 * n + i ];
 
 		}
 
@@ -111,17 +111,17 @@ export class VertexRemoval {
 				const l = links[ 4 * n + j ];
 				if ( l >= 0 ) {
 
-					adj[ 4 * t + j ] = 4 * slots[ l >> 2 ] + ( l & 3 );
+					v[ CELL * t + 4 + j ] = CELL * slots[ l >> 2 ] + 4 + ( l & 3 );
 
 				} else {
 
 					const h = this.boundaryHandle[ - l - 1 ];
-					adj[ 4 * t + j ] = h;
-					adj[ h ] = 4 * t + j;
+					v[ CELL * t + 4 + j ] = h;
+					v[ h ] = CELL * t + 4 + j;
 
 				}
 
-				const w = v[ 4 * t + j ];
+				const w = v[ CELL * t + j ];
 				if ( w !== INF ) vertexCell[ w ] = t;
 
 			}
@@ -140,12 +140,12 @@ export class VertexRemoval {
 
 	/**
 	 * Collects the star of vertex `index`: cells into `star` (returned count), its faces opposite
-	 * `index` into `boundaryHandle` (the outside cell's side, `4u + j`) and `boundaryFaces`, the
+	 * `index` into `boundaryHandle` (the outside cell's side, a link `8u + 4 + j`) and `boundaryFaces`, the
 	 * other finite vertices into `link` (count in `linkCount`); counts its tetrahedra in `finiteStarCount`.
 	 */
 	private collectStar( index: number, builder: DelaunayBuilder, vertexCell: Int32Array ): number {
 
-		const v = builder.vertices, adj = builder.adjacency;
+		const v = builder.cells;
 		if ( this.visit.length < builder.capacity ) this.visit = growInt32( this.visit, builder.capacity );
 		const visit = this.visit, stamp = ++ this.stamp;
 		let count = 0;
@@ -158,8 +158,8 @@ export class VertexRemoval {
 			for ( let j = 0; j < 4; j ++ ) {
 
 				// Faces through `index` lead to the rest of the star.
-				if ( v[ 4 * t + j ] === index ) continue;
-				const u = adj[ 4 * t + j ] >> 2;
+				if ( v[ CELL * t + j ] === index ) continue;
+				const u = v[ CELL * t + 4 + j ] >> CELL_SHIFT;
 				if ( visit[ u ] === stamp ) continue;
 				visit[ u ] = stamp;
 				if ( count === this.star.length ) this.star = growInt32( this.star, count * 2 );
@@ -185,7 +185,7 @@ export class VertexRemoval {
 			let k = 0, ghost = false;
 			for ( let j = 0; j < 4; j ++ ) {
 
-				const w = v[ 4 * t + j ];
+				const w = v[ CELL * t + j ];
 				if ( w === index ) { k = j; continue; }
 				if ( w === INF ) { ghost = true; continue; }
 				if ( pointStamp[ w ] !== stamp ) {
@@ -199,9 +199,9 @@ export class VertexRemoval {
 			}
 
 			if ( ! ghost ) finite ++;
-			this.boundaryHandle[ b ] = adj[ 4 * t + k ];
+			this.boundaryHandle[ b ] = v[ CELL * t + 4 + k ];
 			this.boundaryHits[ b ] = 0;
-			otherThree( v, t, k );
+			otherThree( v, CELL * t, k );
 			this.boundaryFaces.set( _three[ 0 ], _three[ 1 ], _three[ 2 ], b );
 
 		}
@@ -219,7 +219,7 @@ export class VertexRemoval {
 	 */
 	private computeFill( index: number, starCount: number, builder: DelaunayBuilder, p: Float64Array ): number {
 
-		const v = builder.vertices;
+		const v = builder.cells;
 		const link = this.link.subarray( 0, this.linkCount );
 		let fillCount = 0;
 
@@ -234,7 +234,7 @@ export class VertexRemoval {
 				this.ensureFill( fillCount + 1 );
 				for ( let i = 0; i < 4; i ++ ) {
 
-					const w = v[ 4 * t + i ];
+					const w = v[ CELL * t + i ];
 					this.fill[ 4 * fillCount + i ] = w === index ? INF : w;
 
 				}
@@ -256,7 +256,7 @@ export class VertexRemoval {
 
 			for ( let j = 0; j < 4; j ++ ) {
 
-				otherThree( fill, n, j );
+				otherThree( fill, 4 * n, j );
 				const a = _three[ 0 ], b = _three[ 1 ], c = _three[ 2 ];
 				const bf = boundary.get( a, b, c );
 				if ( bf >= 0 ) {
@@ -312,14 +312,14 @@ export class VertexRemoval {
 
 		// A hole face behind a tetrahedron of the star: find it in the small triangulation and
 		// take the cell on the side where `index` was.
-		const v = builder.vertices, sv = small.vertices, sadj = small.adjacency;
+		const v = builder.cells, sv = small.cells;
 		let s = 0, k = 0;
 		for ( ; ; s ++ ) {
 
 			const t = this.star[ s ];
 			if ( ! builder.isGhost( t ) ) {
 
-				while ( v[ 4 * t + k ] !== index ) k ++;
+				while ( v[ CELL * t + k ] !== index ) k ++;
 				break;
 
 			}
@@ -327,28 +327,28 @@ export class VertexRemoval {
 		}
 
 		const t = this.star[ s ];
-		otherThree( v, t, k );
+		otherThree( v, CELL * t, k );
 		const f0 = _three[ 0 ], f1 = _three[ 1 ], f2 = _three[ 2 ];
 		let start = - 1;
 		search: for ( let u = 0; u < small.used; u ++ ) {
 
-			if ( sv[ 4 * u ] === FREE ) continue;
+			if ( sv[ CELL * u ] === FREE ) continue;
 			for ( let j = 0; j < 4; j ++ ) {
 
-				otherThree( sv, u, j );
+				otherThree( sv, CELL * u, j );
 				const a = _three[ 0 ], b = _three[ 1 ], c = _three[ 2 ];
 				if ( ! sameTriangle( a, b, c, f0, f1, f2 ) ) continue;
-				const apex = sv[ 4 * u + j ];
+				const apex = sv[ CELL * u + j ];
 				if ( apex !== INF ) {
 
 					// Same side as `index` ⇔ the star cell stays positive with `index` replaced by apex.
-					start = orientReplaced( p, v, t, k, apex ) > 0 ? u : sadj[ 4 * u + j ] >> 2;
+					start = orientReplaced( p, v, t, k, apex ) > 0 ? u : sv[ CELL * u + 4 + j ] >> CELL_SHIFT;
 
 				} else {
 
-					// A ghost: decide by the finite cell behind the face.
-					const behind = sadj[ 4 * u + j ];
-					start = orientReplaced( p, v, t, k, sv[ behind ] ) > 0 ? behind >> 2 : u;
+					// A ghost: decide by the finite cell behind the face (its vertex opposite the face).
+					const behind = sv[ CELL * u + 4 + j ];
+					start = orientReplaced( p, v, t, k, sv[ behind - 4 ] ) > 0 ? behind >> CELL_SHIFT : u;
 
 				}
 
@@ -374,14 +374,14 @@ export class VertexRemoval {
 
 			const u = stack[ -- top ];
 			this.ensureFill( fillCount + 1 );
-			for ( let i = 0; i < 4; i ++ ) this.fill[ 4 * fillCount + i ] = sv[ 4 * u + i ];
+			for ( let i = 0; i < 4; i ++ ) this.fill[ 4 * fillCount + i ] = sv[ CELL * u + i ];
 			fillCount ++;
 			for ( let j = 0; j < 4; j ++ ) {
 
-				otherThree( sv, u, j );
+				otherThree( sv, CELL * u, j );
 				const a = _three[ 0 ], b = _three[ 1 ], c = _three[ 2 ];
 				if ( this.boundaryFaces.get( a, b, c ) >= 0 ) continue;
-				const w = sadj[ 4 * u + j ] >> 2;
+				const w = sv[ CELL * u + 4 + j ] >> CELL_SHIFT;
 				if ( visit[ w ] === stamp ) continue;
 				visit[ w ] = stamp;
 				if ( top === stack.length ) stack = this.fillSlots = growInt32( stack, top * 2 );
@@ -410,10 +410,9 @@ export class VertexRemoval {
 
 const _three = new Int32Array( 3 );
 
-/** Writes the three vertices of cell t other than slot j to `_three`. */
-function otherThree( v: Int32Array, t: number, j: number ): void {
+/** Writes the three vertices other than slot j of the cell whose four vertices start at v[ k ] to `_three`. */
+function otherThree( v: Int32Array, k: number, j: number ): void {
 
-	const k = 4 * t;
 	if ( j === 0 ) {
 
 		_three[ 0 ] = v[ k + 1 ];
@@ -451,7 +450,7 @@ function sameTriangle( a: number, b: number, c: number, d: number, e: number, f:
 /** Orientation of finite cell t with its vertex in slot k replaced by point w. */
 function orientReplaced( p: Float64Array, v: Int32Array, t: number, k: number, w: number ): number {
 
-	const o = 4 * t;
+	const o = CELL * t;
 	const a = k === 0 ? w : v[ o ], b = k === 1 ? w : v[ o + 1 ], c = k === 2 ? w : v[ o + 2 ], d = k === 3 ? w : v[ o + 3 ];
 	return orient( p, a, b, c, d );
 

@@ -1,6 +1,6 @@
 import { assertOptionalNumber, assertOptions, assertPoints } from '../validate.js';
 import { DegenerateInputError } from './DegenerateInputError.js';
-import { DelaunayBuilder } from './DelaunayBuilder.js';
+import { CELL, CELL_SHIFT, DelaunayBuilder } from './DelaunayBuilder.js';
 import { findInitialTetrahedron } from './initialTetrahedron.js';
 import { insertionOrder } from './spatialOrder.js';
 import { mergeDuplicates } from './mergeDuplicates.js';
@@ -186,12 +186,12 @@ export function insertAll(
 /** Compacts the finite cells of `builder` into the output arrays. */
 function finiteCells( builder: DelaunayBuilder ): { tetrahedra: Uint32Array; neighbors: Int32Array } {
 
-	const v = builder.vertices, adj = builder.adjacency, used = builder.used;
+	const v = builder.cells, used = builder.used;
 	const index = new Int32Array( used ).fill( - 1 );
 	let count = 0;
 	for ( let t = 0; t < used; t ++ ) {
 
-		const k = 4 * t;
+		const k = CELL * t;
 		// FREE is also negative, so one test per vertex rules out released slots and ghosts.
 		if ( v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ) index[ t ] = count ++;
 
@@ -205,8 +205,8 @@ function finiteCells( builder: DelaunayBuilder ): { tetrahedra: Uint32Array; nei
 		if ( o < 0 ) continue;
 		for ( let i = 0; i < 4; i ++ ) {
 
-			tetrahedra[ 4 * o + i ] = v[ 4 * t + i ];
-			neighbors[ 4 * o + i ] = index[ adj[ 4 * t + i ] >> 2 ];
+			tetrahedra[ 4 * o + i ] = v[ CELL * t + i ];
+			neighbors[ 4 * o + i ] = index[ v[ CELL * t + 4 + i ] >> CELL_SHIFT ];
 
 		}
 
