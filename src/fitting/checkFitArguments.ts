@@ -10,18 +10,34 @@ const OPTION_KEYS = [ 'gradients', 'lambda', 'gradientLambda', 'folds', 'seed', 
 /** The arguments of `fitProbeSH`, checked, with the samples of weight 0 dropped. */
 export interface CheckedFit {
 
+	/** The interpolator's probe count. */
 	probeCount: number;
 
-	/** Positions (3 each), SH (27 each) and weights (> 0) of the samples kept. */
+	/** Positions of the samples kept, 3 each. */
 	positions: Float64Array;
+
+	/** Their SH, 27 each. */
 	sh: Float64Array;
+
+	/** Their weights, each > 0. */
 	weights: Float64Array;
 
+	/** The options, defaults filled in. */
 	gradients: boolean;
+
+	/** λ given, or 'auto'. */
 	lambda: number | 'auto';
+
+	/** Gradient λ given, or 'auto'. */
 	gradientLambda: number | 'auto';
+
+	/** Cross-validation folds. */
 	folds: number;
+
+	/** Fold assignment seed. */
 	seed: number;
+
+	/** Whether the non-negative step runs. */
 	nonNegative: boolean;
 
 }

@@ -9,7 +9,10 @@ import { searchLine, searchPlane } from './lambdaSearch.js';
 /** What {@link chooseLambdas} needs besides the design. */
 export interface CrossValidationInput {
 
+	/** The samples' design rows. */
 	design: SampleDesign;
+
+	/** The normal matrix's layout. */
 	envelope: Envelope;
 
 	/** 27 floats per sample. */
@@ -30,7 +33,10 @@ export interface CrossValidationInput {
 	/** A fixed gradient λ, or 'auto' (ignored without gradients). */
 	gradientLambda: number | 'auto';
 
+	/** Folds (at most the sample count is used). */
 	folds: number;
+
+	/** Fold assignment seed. */
 	seed: number;
 
 }
@@ -38,7 +44,10 @@ export interface CrossValidationInput {
 /** The λ chosen and its cross-validation error. */
 export interface LambdaChoice {
 
+	/** The λ chosen (or given). */
 	lambda: number;
+
+	/** The gradient λ chosen (or given); 0 without gradients. */
 	gradientLambda: number;
 
 	/** Σ sⱼ errorⱼ / Σ sⱼ over every sample, each predicted by the fit without its fold. */

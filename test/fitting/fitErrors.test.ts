@@ -9,7 +9,8 @@ const probes = jitteredLattice();
 const mesh = new TetrahedralMesh( probes );
 const captured = sample( linearField, probes );
 const points = randomPoints( 40, - 1.5, 1.5, 61 );
-const samples: FitSamples = { positions: points, sh: sample( linearField, points ) };
+const pointSH = sample( linearField, points );
+const samples: FitSamples = { positions: points, sh: pointSH };
 
 type Overrides = { samples?: unknown; options?: unknown; positions?: unknown; sh?: unknown; interpolator?: unknown };
 const call = ( overrides: Overrides ) => () => fitProbeSH(
@@ -23,20 +24,20 @@ describe( 'fitProbeSH: named errors', () => {
 
 		expect( call( { positions: probes.subarray( 3 ) } ) ).toThrow( /^fitProbeSH: probePositions holds 63 probes; the interpolator has 64/ );
 		expect( call( { sh: captured.subarray( 1 ) } ) ).toThrow( /^fitProbeSH: probeSH must have length 1728/ );
-		expect( call( { samples: { positions: points.subarray( 1 ), sh: samples.sh } } ) ).toThrow( /^fitProbeSH: samples.positions must hold x, y, z per point/ );
-		expect( call( { samples: { positions: points, sh: samples.sh.slice( 27 ) } } ) ).toThrow( /^fitProbeSH: samples.sh must have length 1080/ );
+		expect( call( { samples: { positions: points.subarray( 1 ), sh: pointSH } } ) ).toThrow( /^fitProbeSH: samples.positions must hold x, y, z per point/ );
+		expect( call( { samples: { positions: points, sh: pointSH.slice( 27 ) } } ) ).toThrow( /^fitProbeSH: samples.sh must have length 1080/ );
 		expect( call( { samples: { ...samples, weights: new Float64Array( 39 ) } } ) ).toThrow( /^fitProbeSH: samples.weights must hold one weight per sample \(40\)/ );
 
 	} );
 
 	it( 'NaN samples, negative weights, no samples', () => {
 
-		const nanSH = Float64Array.from( samples.sh as ArrayLike<number> );
+		const nanSH = Float64Array.from( pointSH );
 		nanSH[ 100 ] = NaN;
 		expect( call( { samples: { positions: points, sh: nanSH } } ) ).toThrow( /^fitProbeSH: samples.sh\[100\] is NaN/ );
 		const nanPosition = Float64Array.from( points );
 		nanPosition[ 7 ] = Infinity;
-		expect( call( { samples: { positions: nanPosition, sh: samples.sh } } ) ).toThrow( /^fitProbeSH: samples.positions\[7\] is Infinity/ );
+		expect( call( { samples: { positions: nanPosition, sh: pointSH } } ) ).toThrow( /^fitProbeSH: samples.positions\[7\] is Infinity/ );
 		const weights = new Float64Array( 40 ).fill( 1 );
 		weights[ 3 ] = - 0.5;
 		expect( call( { samples: { ...samples, weights } } ) ).toThrow( /^fitProbeSH: samples.weights\[3\] is -0.5; weights must be ≥ 0/ );
@@ -45,7 +46,7 @@ describe( 'fitProbeSH: named errors', () => {
 		expect( call( { samples: null } ) ).toThrow( TypeError );
 		expect( call( { samples: { positions: points } } ) ).toThrow( /^fitProbeSH: samples.sh must be an array/ );
 		// Cross-validation needs two samples (a fixed λ does not).
-		const one = { positions: points.subarray( 0, 3 ), sh: ( samples.sh as Float64Array ).subarray( 0, 27 ) };
+		const one = { positions: points.subarray( 0, 3 ), sh: pointSH.subarray( 0, 27 ) };
 		expect( call( { samples: one } ) ).toThrow( /^fitProbeSH: choosing λ by cross-validation needs at least 2 samples/ );
 		expect( call( { samples: one, options: { lambda: 1 } } ) ).not.toThrow();
 

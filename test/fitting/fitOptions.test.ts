@@ -16,7 +16,8 @@ const probes = jitteredLattice();
 const mesh = new TetrahedralMesh( probes );
 const captured = sample( field, probes );
 const fitPoints = randomPoints( 600, - 2.2, 2.2, 31 );
-const samples: FitSamples = { positions: fitPoints, sh: sample( field, fitPoints ) };
+const fitSH = sample( field, fitPoints );
+const samples: FitSamples = { positions: fitPoints, sh: fitSH };
 
 const bits = ( a: Float32Array | null ): number[] => ( a === null ? [] : [ ...new Uint32Array( a.buffer, a.byteOffset, a.length ) ] );
 function expectIdentical( a: ReturnType<typeof fitProbeSH>, b: ReturnType<typeof fitProbeSH> ): void {
@@ -74,7 +75,7 @@ describe( 'fitProbeSH: λ', () => {
 
 	it( 'λ = 0 with unknowns no sample pins down (one sample) stays finite: the ridge keeps the rest captured', () => {
 
-		const one = { positions: [ 0.1, 0.2, 0.3 ], sh: samples.sh.slice( 0, 27 ) as Float64Array };
+		const one = { positions: [ 0.1, 0.2, 0.3 ], sh: fitSH.slice( 0, 27 ) };
 		for ( const gradients of [ false, true ] ) {
 
 			const result = fitProbeSH( mesh, probes, captured, one, { gradients, lambda: 0, gradientLambda: 0 } );
@@ -133,7 +134,7 @@ describe( 'fitProbeSH: sample weights', () => {
 		const junk = perturbed( sample( field, extra ), 5, 43 );
 		const merged: FitSamples = {
 			positions: Float64Array.from( [ ...fitPoints, ...extra ] ),
-			sh: Float64Array.from( [ ...samples.sh, ...junk ] ),
+			sh: Float64Array.from( [ ...fitSH, ...junk ] ),
 			weights: Float64Array.from( { length: 650 }, ( _, j ) => ( j < 600 ? 1 : 0 ) ),
 		};
 		expectIdentical( fitProbeSH( mesh, probes, captured, merged, options ), fitProbeSH( mesh, probes, captured, samples, options ) );
@@ -155,7 +156,7 @@ describe( 'fitProbeSH: sample weights', () => {
 
 		const twice: FitSamples = {
 			positions: Float64Array.from( [ ...fitPoints, ...fitPoints.subarray( 0, 90 ) ] ),
-			sh: Float64Array.from( [ ...samples.sh, ...samples.sh.subarray( 0, 27 * 30 ) ] ),
+			sh: Float64Array.from( [ ...fitSH, ...fitSH.subarray( 0, 27 * 30 ) ] ),
 		};
 		const weighted: FitSamples = { ...samples, weights: Float64Array.from( { length: 600 }, ( _, j ) => ( j < 30 ? 2 : 1 ) ) };
 		const a = fitProbeSH( mesh, probes, captured, twice, options ), b = fitProbeSH( mesh, probes, captured, weighted, options );
