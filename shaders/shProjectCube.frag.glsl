@@ -1,64 +1,122 @@
-// First pass of the GPU SH projection of a cube map (paper 2.2): each fragment integrates half of
-// the 9 SH coefficients (5 or 4) over one block of texels, on all six faces, as
-// Σ L(ω)·Y_k(ω)·Ω(texel), reading each texel once. The output is a tiles × tiles grid per half,
-// the two halves side by side, one row block per probe, in four float targets (shPack);
-// shReduce.frag.glsl then sums each grid down to one texel.
+// First pass of the GPU SH projection of a cube map (paper 2.2): Σ L(ω)·Y_k(ω)·Ω(texel) over every
+// texel, all nine coefficients in one fragment. Texels come in groups of 24 that share a solid
+// angle and, up to signs and a permutation, a direction: the four mirror images (±s, ±t) of one
+// position on each of the six faces. A fragment walks one block of a face quadrant; per position
+// it reads Ω once, normalises once, and combines each face's four radiances by their parity in s
+// and t (E even, P odd in s, Q odd in t, R odd in both), since each Y_k is even or odd in each, so
+// 24 texels cost nine multiply-adds instead of 24 × 9 (docs/gpu-projection.md derives the terms).
+// The output is a tiles × tiles grid per probe, one row block per probe, in seven float planes
+// (shPack); shReduce and shGather sum each grid to one texel.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
 
 uniform samplerCube cubeMap; // NEAREST filtering: every lookup below hits one texel centre exactly
-uniform sampler2D solidAngles; // size × size texel solid angles, the same on every face
+// ceil(size / 2)² texel solid angles of one face quadrant, the same on every face and mirror image;
+// halved on an odd size's middle row and column, whose mirror images are the texel itself.
+uniform sampler2D solidAngles;
 uniform int size;
-uniform int tiles;
 uniform int block;
 uniform int rowOffset;
 
-#include <shBasis>
 #include <shPack>
 
-// The direction through the centre of texel (s, t) of a face, s, t in (−1, 1): the inverse of the
-// OpenGL ES 3.0 cube map face selection (section 3.8.10), so texture() lands on that very texel.
-vec3 faceDirection( const in int face, const in float s, const in float t ) {
+// The directions through the texel centres (±s, ±t) of one face, s, t ≥ 0: the inverse of the
+// OpenGL ES 3.0 cube map face selection (section 3.8.10), so texture() lands on those very texels
+// (face 0: +X at (1, −t, −s), 1: −X at (−1, −t, s), 2: +Y at (s, 1, t), 3: −Y at (s, −1, −t),
+// 4: +Z at (s, −t, 1), 5: −Z at (−s, −t, −1)). Returns their parity sums.
+void faceSums( const in int face, const in float s, const in float t, out vec3 E, out vec3 P, out vec3 Q, out vec3 R ) {
 
-	if ( face == 0 ) return vec3( 1.0, - t, - s );
-	if ( face == 1 ) return vec3( - 1.0, - t, s );
-	if ( face == 2 ) return vec3( s, 1.0, t );
-	if ( face == 3 ) return vec3( s, - 1.0, - t );
-	if ( face == 4 ) return vec3( s, - t, 1.0 );
-	return vec3( - s, - t, - 1.0 );
+	vec3 pp, pm, mp, mm; // radiance at ( s, t ), ( s, −t ), ( −s, t ), ( −s, −t )
+	if ( face == 0 ) {
+
+		pp = texture( cubeMap, vec3( 1.0, - t, - s ) ).rgb; pm = texture( cubeMap, vec3( 1.0, t, - s ) ).rgb;
+		mp = texture( cubeMap, vec3( 1.0, - t, s ) ).rgb; mm = texture( cubeMap, vec3( 1.0, t, s ) ).rgb;
+
+	} else if ( face == 1 ) {
+
+		pp = texture( cubeMap, vec3( - 1.0, - t, s ) ).rgb; pm = texture( cubeMap, vec3( - 1.0, t, s ) ).rgb;
+		mp = texture( cubeMap, vec3( - 1.0, - t, - s ) ).rgb; mm = texture( cubeMap, vec3( - 1.0, t, - s ) ).rgb;
+
+	} else if ( face == 2 ) {
+
+		pp = texture( cubeMap, vec3( s, 1.0, t ) ).rgb; pm = texture( cubeMap, vec3( s, 1.0, - t ) ).rgb;
+		mp = texture( cubeMap, vec3( - s, 1.0, t ) ).rgb; mm = texture( cubeMap, vec3( - s, 1.0, - t ) ).rgb;
+
+	} else if ( face == 3 ) {
+
+		pp = texture( cubeMap, vec3( s, - 1.0, - t ) ).rgb; pm = texture( cubeMap, vec3( s, - 1.0, t ) ).rgb;
+		mp = texture( cubeMap, vec3( - s, - 1.0, - t ) ).rgb; mm = texture( cubeMap, vec3( - s, - 1.0, t ) ).rgb;
+
+	} else if ( face == 4 ) {
+
+		pp = texture( cubeMap, vec3( s, - t, 1.0 ) ).rgb; pm = texture( cubeMap, vec3( s, t, 1.0 ) ).rgb;
+		mp = texture( cubeMap, vec3( - s, - t, 1.0 ) ).rgb; mm = texture( cubeMap, vec3( - s, t, 1.0 ) ).rgb;
+
+	} else {
+
+		pp = texture( cubeMap, vec3( - s, - t, - 1.0 ) ).rgb; pm = texture( cubeMap, vec3( - s, t, - 1.0 ) ).rgb;
+		mp = texture( cubeMap, vec3( s, - t, - 1.0 ) ).rgb; mm = texture( cubeMap, vec3( s, t, - 1.0 ) ).rgb;
+
+	}
+
+	vec3 sPlus = pp + pm, sMinus = mp + mm, tOddPlus = pp - pm, tOddMinus = mp - mm;
+	E = sPlus + sMinus;
+	P = sPlus - sMinus;
+	Q = tOddPlus + tOddMinus;
+	R = tOddPlus - tOddMinus;
 
 }
 
 void main() {
 
-	ivec2 pixel = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
-	int half_ = pixel.x / tiles;
-	int x0 = ( pixel.x - half_ * tiles ) * block;
-	int y0 = pixel.y * block;
-	int x1 = min( x0 + block, size );
-	int y1 = min( y0 + block, size );
+	ivec2 tile = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
+	int quadrant = ( size + 1 ) / 2;
+	int x0 = tile.x * block;
+	int y0 = tile.y * block;
+	int x1 = min( x0 + block, quadrant );
+	int y1 = min( y0 + block, quadrant );
 	float texel = 2.0 / float( size );
 
-	vec3 s0 = vec3( 0.0 ), s1 = vec3( 0.0 ), s2 = vec3( 0.0 ), s3 = vec3( 0.0 ), s4 = vec3( 0.0 );
-	for ( int face = 0; face < 6; face ++ ) {
+	vec3 c0 = vec3( 0.0 ), c1 = vec3( 0.0 ), c2 = vec3( 0.0 ), c3 = vec3( 0.0 ), c4 = vec3( 0.0 );
+	vec3 c5 = vec3( 0.0 ), c6 = vec3( 0.0 ), c7 = vec3( 0.0 ), c8 = vec3( 0.0 );
+	for ( int j = y0; j < y1; j ++ ) {
 
-		for ( int j = y0; j < y1; j ++ ) {
+		// Quadrant texel ( i, j ) is face texel ( i, j ), at ( −s, −t ); its mirror images are
+		// columns size − 1 − i and rows size − 1 − j.
+		float t = 1.0 - ( float( j ) + 0.5 ) * texel;
+		for ( int i = x0; i < x1; i ++ ) {
 
-			float t = ( float( j ) + 0.5 ) * texel - 1.0;
-			for ( int i = x0; i < x1; i ++ ) {
-
-				float s = ( float( i ) + 0.5 ) * texel - 1.0;
-				vec3 direction = faceDirection( face, s, t );
-				vec3 radiance = texture( cubeMap, direction ).rgb * texelFetch( solidAngles, ivec2( i, j ), 0 ).r;
-				accumulateHalf( half_, radiance, normalize( direction ), s0, s1, s2, s3, s4 );
-
-			}
+			float s = 1.0 - ( float( i ) + 0.5 ) * texel;
+			float w = texelFetch( solidAngles, ivec2( i, j ), 0 ).r;
+			// The unit direction of ( s, t ) on face 0 is ( A, −T, −S ) (up to signs and order on the others).
+			float A = inversesqrt( 1.0 + s * s + t * t ), S = s * A, T = t * A;
+			vec3 E0, P0, Q0, R0, E1, P1, Q1, R1, E2, P2, Q2, R2, E3, P3, Q3, R3, E4, P4, Q4, R4, E5, P5, Q5, R5;
+			faceSums( 0, s, t, E0, P0, Q0, R0 );
+			faceSums( 1, s, t, E1, P1, Q1, R1 );
+			faceSums( 2, s, t, E2, P2, Q2, R2 );
+			faceSums( 3, s, t, E3, P3, Q3, R3 );
+			faceSums( 4, s, t, E4, P4, Q4, R4 );
+			faceSums( 5, s, t, E5, P5, Q5, R5 );
+			float AS = A * S, AT = A * T, ST = S * T;
+			vec3 xFaces = E0 + E1, yFaces = E2 + E3, zFaces = E4 + E5;
+			// Y_k without its constant (applied once at the end), summed over the 24 texels.
+			c0 += w * ( xFaces + yFaces + zFaces );
+			c1 += w * ( A * ( E2 - E3 ) - T * ( Q0 + Q1 + Q4 + Q5 ) );
+			c2 += w * ( A * ( E4 - E5 ) + S * ( P1 - P0 ) + T * ( Q2 - Q3 ) );
+			c3 += w * ( A * ( E0 - E1 ) + S * ( P2 + P3 + P4 - P5 ) );
+			c4 += w * ( AT * ( Q1 - Q0 ) + AS * ( P2 - P3 ) + ST * ( R5 - R4 ) );
+			c5 += w * ( ST * ( R0 - R1 ) + AT * ( Q2 + Q3 - Q4 + Q5 ) );
+			c6 += w * ( ( 3.0 * S * S - 1.0 ) * xFaces + ( 3.0 * T * T - 1.0 ) * yFaces + ( 3.0 * A * A - 1.0 ) * zFaces );
+			c7 += w * ( AS * ( P4 + P5 - P0 - P1 ) + ST * ( R2 - R3 ) );
+			c8 += w * ( ( A * A - T * T ) * xFaces + ( S * S - A * A ) * yFaces + ( S * S - T * T ) * zFaces );
 
 		}
 
 	}
 
-	writeSums( s0, s1, s2, s3, s4 );
+	// three.js SphericalHarmonics3 basis constants (getBasisAt).
+	writeSums( c0 * 0.282095, c1 * 0.488603, c2 * 0.488603, c3 * 0.488603, c4 * 1.092548,
+		c5 * 1.092548, c6 * 0.315392, c7 * 1.092548, c8 * 0.546274 );
 
 }

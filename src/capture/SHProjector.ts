@@ -3,28 +3,40 @@ import {
 	RedFormat, RGBAFormat, Scene, WebGLRenderTarget,
 	type CubeTexture, type Texture, type WebGLRenderer,
 } from 'three';
-import { fullscreenVert, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
+import { fullscreenVert, shGatherFrag, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
 import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../sh/cubeTexelSolidAngle.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 import { CAPTURE_SOLID_ANGLES, assertRenderer } from './captureSettings.js';
 
-// Rows of the projection target: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
+// Rows of the projection targets: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
 const MAX_ROWS = 4096;
 
-// The 9 coefficients are projected in two halves (0..4 and 5..8) of up to 15 floats, each packed
-// into four RGBA float planes: a fragment reads each texel of its block once for five
-// coefficients, instead of once per coefficient.
-const HALVES = 2;
-const PLANES = 4;
+// The 27 SH floats and one unused, as seven RGBA float planes (shaders/shPack.glsl).
+const PLANES = 7;
 
-/** The grid of partial sums per half and probe for a source of `size` texels per axis. */
-function tilesFor( size: number ): number {
+// The gather pass sums up to this many tiles per axis itself; larger grids are reduced by 4 first.
+const GATHER_TILES = 4;
 
-	// About 8 texels per block and axis; at most 16 × 16 tiles, so a reduction takes ≤ 2 passes.
+/**
+ * Tiles per axis of a probe's grid of partial sums over a domain of `texels` per axis (a cube face
+ * quadrant; half a panorama's shorter side, so that a panorama of width `size` never needs more
+ * tiles than a cube of `size`): blocks of at least 4 texels, at most 16 × 16 tiles (one reduction
+ * pass, then the gather), and 2 × 2 where the domain allows, so a draw fills a whole fragment quad.
+ */
+function tilesFor( texels: number ): number {
+
 	let tiles = 1;
-	while ( tiles < 16 && tiles * 2 * 8 <= size ) tiles *= 2;
-	return tiles;
+	while ( tiles < 16 && tiles * 2 * 4 <= texels ) tiles *= 2;
+	return tiles === 1 && texels >= 2 ? 2 : tiles;
+
+}
+
+/** The planes one draw writes: `count` of them from `first`. */
+interface PlaneGroup {
+
+	first: number;
+	count: number;
 
 }
 
@@ -34,20 +46,27 @@ const multipleTargetSupport = new WeakMap<WebGLRenderer, boolean>();
 export interface SHProjectorOptions {
 
 	/**
-	 * Write the four planes in one draw with multiple render targets (default: when a quick
-	 * self-test on this renderer shows they work), or in four draws (`false`). headless-gl, for one,
-	 * accepts multiple targets but fills only the first.
+	 * Write the seven planes of partial sums with multiple render targets, as many per draw as the
+	 * renderer's draw buffers allow (default: when a quick self-test on this renderer shows they
+	 * work), or one plane per draw (`false`). headless-gl, for one, accepts multiple targets but
+	 * fills only the first.
 	 */
 	multipleTargets?: boolean;
+
+	/**
+	 * Most planes one draw writes with multiple render targets, 1..7 (default: the renderer's
+	 * MAX_DRAW_BUFFERS, at most 7). Lower it for a driver that mishandles many attachments.
+	 */
+	drawBuffers?: number;
 
 }
 
 /**
  * GPU projection of cube maps and panoramas onto SH9 (paper 2.2), batched: each source is
- * integrated into its own row block of four float planes (one fragment per half of the
- * coefficients and block of texels, exact texel solid angles), the blocks are summed by a
- * logarithmic reduction (4 × 4 or 2 × 2 per pass), and a whole batch ends in one small read-back
- * per plane: 27 floats per probe in all.
+ * integrated into its own row block of seven float planes (one fragment per block of texels, all
+ * nine coefficients, exact texel solid angles), the blocks are summed by a 4 × 4 reduction and a
+ * gather pass that lays every probe's 27 floats out in one small target, and a whole batch ends
+ * in one read-back.
  *
  * ```js
  * const projector = new SHProjector( renderer );
@@ -63,20 +82,28 @@ export class SHProjector {
 	/** The renderer whose context owns the targets. */
 	readonly renderer: WebGLRenderer;
 
-	/** Whether the planes are written in one draw (multiple render targets) or four. */
+	/** Whether the planes are written with multiple render targets (several per draw) or one per draw. */
 	readonly multipleTargets: boolean;
+
+	/** Planes each draw writes: all seven in one draw where the renderer allows, 1 without multiple targets. */
+	readonly drawBuffers: number;
 
 	private readonly scene = new Scene();
 	private readonly camera = new OrthographicCamera();
 	private readonly quad: Mesh;
-	private readonly cubeMaterial: RawShaderMaterial;
-	private readonly equirectMaterial: RawShaderMaterial;
-	private readonly reduceMaterial: RawShaderMaterial;
+	// The planes each draw writes: one group of seven with enough draw buffers.
+	private readonly groups: PlaneGroup[] = [];
+	// One material per plane group; the materials of a pass share one uniforms object.
+	private readonly cubeMaterials: RawShaderMaterial[];
+	private readonly equirectMaterials: RawShaderMaterial[];
+	private readonly reduceMaterials: RawShaderMaterial[];
+	private readonly gatherMaterial: RawShaderMaterial;
 	private readonly solidAngleTextures = new Map<string, DataTexture>();
-	// levels[ l ][ p ]: the render target holding plane p at reduction level l (with multiple
-	// targets, one render target serves all four planes of a level).
+	// levels[ l ][ g ]: the render target holding plane group g at reduction level l.
 	private levels: WebGLRenderTarget[][] = [];
 	private levelTiles = 0;
+	// Every probe's seven planes side by side (x = plane, y = probe): the batch's one read-back.
+	private gatherTarget: WebGLRenderTarget | null = null;
 
 	private source: 'cube' | 'equirect' | null = null;
 	private tiles = 1;
@@ -93,24 +120,36 @@ export class SHProjector {
 		assertRenderer( 'SHProjector', renderer );
 		assertOptions( 'SHProjector', 'options', options );
 		assertOptionalBoolean( 'SHProjector', 'options.multipleTargets', options.multipleTargets );
+		if ( options.drawBuffers !== undefined ) assertInteger( 'SHProjector', 'options.drawBuffers', options.drawBuffers, 1, PLANES );
 		this.renderer = renderer;
 		this.multipleTargets = options.multipleTargets ?? SHProjector.supportsMultipleTargets( renderer );
-		const defines: Record<string, number> = this.multipleTargets ? {} : { SINGLE_TARGET: 1 };
-		const material = ( fragmentShader: string, uniforms: Record<string, { value: unknown }> ) => new RawShaderMaterial( {
-			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, defines, depthTest: false, depthWrite: false,
+		const perDraw = this.multipleTargets ? Math.min( options.drawBuffers ?? PLANES, drawBuffers( renderer ) ) : 1;
+		this.drawBuffers = perDraw;
+		for ( let first = 0; first < PLANES; first += perDraw ) this.groups.push( { first, count: Math.min( perDraw, PLANES - first ) } );
+
+		type Uniforms = Record<string, { value: unknown }>;
+		const material = ( fragmentShader: string, uniforms: Uniforms, group: PlaneGroup ) => new RawShaderMaterial( {
+			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, depthTest: false, depthWrite: false,
+			defines: { PLANE_FIRST: group.first, PLANE_COUNT: group.count },
 		} );
-		this.cubeMaterial = material( shProjectCubeFrag, {
-			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, tiles: { value: 1 }, block: { value: 1 },
-			rowOffset: { value: 0 }, outputIndex: { value: 0 },
-		} );
-		this.equirectMaterial = material( shProjectEquirectFrag, {
-			panorama: { value: null }, size: { value: [ 0, 0 ] }, tiles: { value: 1 }, block: { value: [ 1, 1 ] },
-			rowOffset: { value: 0 }, outputIndex: { value: 0 },
-		} );
-		this.reduceMaterial = material( shReduceFrag, {
-			source0: { value: null }, source1: { value: null }, source2: { value: null }, source3: { value: null }, factor: { value: 2 },
-		} );
-		this.quad = new Mesh( new PlaneGeometry( 2, 2 ), this.cubeMaterial );
+		const cube = {
+			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, block: { value: 1 }, rowOffset: { value: 0 },
+		};
+		const equirect = { panorama: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 } };
+		const reduce: Uniforms = { factor: { value: 4 } };
+		const gather: Uniforms = { factor: { value: 1 } };
+		for ( let plane = 0; plane < PLANES; plane ++ ) {
+
+			reduce[ `source${plane}` ] = { value: null };
+			gather[ `plane${plane}` ] = { value: null };
+
+		}
+
+		this.cubeMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group ) );
+		this.equirectMaterials = this.groups.map( ( group ) => material( shProjectEquirectFrag, equirect, group ) );
+		this.reduceMaterials = this.groups.map( ( group ) => material( shReduceFrag, reduce, group ) );
+		this.gatherMaterial = material( shGatherFrag, gather, { first: 0, count: 1 } );
+		this.quad = new Mesh( new PlaneGeometry( 2, 2 ), this.gatherMaterial );
 		this.quad.frustumCulled = false;
 		this.scene.add( this.quad );
 
@@ -120,13 +159,14 @@ export class SHProjector {
 	static batchCapacity( size: number ): number {
 
 		assertInteger( 'SHProjector.batchCapacity', 'size', size, 1, 1 << 14 );
-		return Math.floor( MAX_ROWS / tilesFor( size ) );
+		return Math.floor( MAX_ROWS / tilesFor( Math.ceil( size / 2 ) ) );
 
 	}
 
 	/**
-	 * Whether multiple render targets really work on this renderer: renders two constant outputs
-	 * into a tiny two-target float render target and reads the second back. Cached per renderer.
+	 * Whether multiple render targets really work on this renderer: renders constant outputs into
+	 * as many float targets as the projection would use at once (up to seven) and reads the last
+	 * one back. Cached per renderer.
 	 */
 	static supportsMultipleTargets( renderer: WebGLRenderer ): boolean {
 
@@ -134,13 +174,23 @@ export class SHProjector {
 		let supported = multipleTargetSupport.get( renderer );
 		if ( supported !== undefined ) return supported;
 
+		const count = Math.min( PLANES, drawBuffers( renderer ) );
+		if ( count < 2 ) {
+
+			multipleTargetSupport.set( renderer, false );
+			return false;
+
+		}
+
 		const target = new WebGLRenderTarget( 1, 1, {
-			type: FloatType, count: 2, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter,
+			type: FloatType, count, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter,
 		} );
-		const material = new RawShaderMaterial( {
-			glslVersion: GLSL3, vertexShader: fullscreenVert,
-			fragmentShader: 'precision highp float;\nlayout( location = 0 ) out vec4 a;\nlayout( location = 1 ) out vec4 b;\nvoid main() { a = vec4( 1.0 ); b = vec4( 2.0 ); }',
-		} );
+		let fragmentShader = 'precision highp float;\n';
+		for ( let i = 0; i < count; i ++ ) fragmentShader += `layout( location = ${i} ) out vec4 out${i};\n`;
+		fragmentShader += 'void main() {\n';
+		for ( let i = 0; i < count; i ++ ) fragmentShader += `\tout${i} = vec4( ${i + 1}.0 );\n`;
+		fragmentShader += '}\n';
+		const material = new RawShaderMaterial( { glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader } );
 		const scene = new Scene();
 		const quad = new Mesh( new PlaneGeometry( 2, 2 ), material );
 		quad.frustumCulled = false;
@@ -151,13 +201,13 @@ export class SHProjector {
 
 			renderer.setRenderTarget( target );
 			renderer.render( scene, new OrthographicCamera() );
-			renderer.readRenderTargetPixels( target, 0, 0, 1, 1, pixel, undefined, 1 );
+			renderer.readRenderTargetPixels( target, 0, 0, 1, 1, pixel, undefined, count - 1 );
 			// A GL error here means the draw was refused; drain the queue so it does not surface
 			// later as someone else's error.
 			const gl = renderer.getContext();
 			let errors = 0;
 			for ( let i = 0; i < 8 && gl.getError() !== gl.NO_ERROR; i ++ ) errors ++;
-			supported = pixel[ 0 ] === 2 && errors === 0;
+			supported = pixel[ 0 ] === count && errors === 0;
 
 		} catch {
 
@@ -199,7 +249,7 @@ export class SHProjector {
 		assertInteger( 'SHProjector.begin', 'size', size, 1, 1 << 14 );
 		const height = source === 'equirect' ? options.height ?? Math.max( 1, size >> 1 ) : size;
 		assertInteger( 'SHProjector.begin', 'height', height, 1, 1 << 14 );
-		const tiles = tilesFor( Math.min( size, height ) );
+		const tiles = tilesFor( Math.ceil( Math.min( size, height ) / 2 ) );
 		assertInteger( 'SHProjector.begin', 'count', count, 1, Math.floor( MAX_ROWS / tiles ) );
 
 		this.source = source;
@@ -210,17 +260,15 @@ export class SHProjector {
 
 		if ( source === 'cube' ) {
 
-			const u = this.cubeMaterial.uniforms;
+			const u = this.cubeMaterials[ 0 ].uniforms;
 			u.solidAngles.value = this.solidAngleTexture( size, solidAngle );
 			u.size.value = size;
-			u.tiles.value = tiles;
-			u.block.value = Math.ceil( size / tiles );
+			u.block.value = Math.ceil( Math.ceil( size / 2 ) / tiles );
 
 		} else {
 
-			const u = this.equirectMaterial.uniforms;
+			const u = this.equirectMaterials[ 0 ].uniforms;
 			u.size.value = [ size, height ];
-			u.tiles.value = tiles;
 			u.block.value = [ Math.ceil( size / tiles ), Math.ceil( height / tiles ) ];
 
 		}
@@ -231,6 +279,7 @@ export class SHProjector {
 	 * Projects the next source of the batch. A cube texture must be the texture of a
 	 * `WebGLCubeRenderTarget` with `NearestFilter` (as {@link ProbeCapturer} makes it), so every
 	 * texel-centre lookup returns that texel; a panorama is any 2D texture, sampled texel by texel.
+	 * The draws are issued at once: the texture may be rendered into again right after.
 	 */
 	add( texture: CubeTexture | Texture ): void {
 
@@ -244,17 +293,15 @@ export class SHProjector {
 
 		}
 
-		const material = this.source === 'cube' ? this.cubeMaterial : this.equirectMaterial;
-		material.uniforms[ this.source === 'cube' ? 'cubeMap' : 'panorama' ].value = texture;
-		material.uniforms.rowOffset.value = this.count * this.tiles;
-		this.quad.material = material;
+		const materials = this.source === 'cube' ? this.cubeMaterials : this.equirectMaterials;
+		const uniforms = materials[ 0 ].uniforms;
+		uniforms[ this.source === 'cube' ? 'cubeMap' : 'panorama' ].value = texture;
+		uniforms.rowOffset.value = this.count * this.tiles;
+		for ( let g = 0; g < this.groups.length; g ++ ) {
 
-		const draws = this.multipleTargets ? 1 : PLANES;
-		for ( let plane = 0; plane < draws; plane ++ ) {
-
-			material.uniforms.outputIndex.value = plane;
-			const target = this.levels[ 0 ][ plane ];
-			target.viewport.set( 0, this.count * this.tiles, HALVES * this.tiles, this.tiles );
+			this.quad.material = materials[ g ];
+			const target = this.levels[ 0 ][ g ];
+			target.viewport.set( 0, this.count * this.tiles, this.tiles, this.tiles );
 			this.draw( target );
 
 		}
@@ -279,31 +326,19 @@ export class SHProjector {
 
 		}
 
-		// Logarithmic reduction: tiles × tiles partial sums → 1 per half and probe.
+		// Grids of more than 4 × 4 tiles (8 or 16 per axis) are first summed 4 × 4 per texel.
 		let tiles = this.tiles, level = 0;
-		this.quad.material = this.reduceMaterial;
-		const uniforms = this.reduceMaterial.uniforms;
-		while ( tiles > 1 ) {
+		const reduce = this.reduceMaterials[ 0 ].uniforms;
+		while ( tiles > GATHER_TILES ) {
 
-			const factor = tiles % 4 === 0 ? 4 : 2;
-			tiles /= factor;
-			uniforms.factor.value = factor;
-			const sources = this.levels[ level ], destinations = this.levels[ level + 1 ];
-			if ( this.multipleTargets ) {
+			tiles /= 4;
+			for ( let g = 0; g < this.groups.length; g ++ ) {
 
-				for ( let plane = 0; plane < PLANES; plane ++ ) uniforms[ `source${plane}` ].value = sources[ 0 ].textures[ plane ];
-				destinations[ 0 ].viewport.set( 0, 0, HALVES * tiles, count * tiles );
-				this.draw( destinations[ 0 ] );
-
-			} else {
-
-				for ( let plane = 0; plane < PLANES; plane ++ ) {
-
-					uniforms.source0.value = sources[ plane ].texture;
-					destinations[ plane ].viewport.set( 0, 0, HALVES * tiles, count * tiles );
-					this.draw( destinations[ plane ] );
-
-				}
+				const sources = this.levels[ level ][ g ], destination = this.levels[ level + 1 ][ g ];
+				for ( let i = 0; i < this.groups[ g ].count; i ++ ) reduce[ `source${i}` ].value = sources.textures[ i ];
+				destination.viewport.set( 0, 0, tiles, count * tiles );
+				this.quad.material = this.reduceMaterials[ g ];
+				this.draw( destination );
 
 			}
 
@@ -311,35 +346,25 @@ export class SHProjector {
 
 		}
 
-		// Texel (half, probe) of plane p holds floats 4p..4p+3 of that half's 16; coefficient k of
-		// the half, channel c, is float 3k + c.
-		const final = this.levels[ level ];
-		const floats = HALVES * 4 * count;
-		if ( this.readBuffer.length < PLANES * floats ) this.readBuffer = new Float32Array( PLANES * floats );
-		for ( let plane = 0; plane < PLANES; plane ++ ) {
+		// The gather sums the last tiles × tiles of every plane into texel ( plane, probe ).
+		const gather = this.gatherMaterial.uniforms;
+		this.groups.forEach( ( group, g ) => {
 
-			const buffer = this.readBuffer.subarray( plane * floats, ( plane + 1 ) * floats );
-			if ( this.multipleTargets ) this.renderer.readRenderTargetPixels( final[ 0 ], 0, 0, HALVES, count, buffer, undefined, plane );
-			else this.renderer.readRenderTargetPixels( final[ plane ], 0, 0, HALVES, count, buffer );
+			for ( let i = 0; i < group.count; i ++ ) gather[ `plane${group.first + i}` ].value = this.levels[ level ][ g ].textures[ i ];
 
-		}
+		} );
 
+		gather.factor.value = tiles;
+		const gatherTarget = this.gatherTarget!;
+		gatherTarget.viewport.set( 0, 0, PLANES, count );
+		this.quad.material = this.gatherMaterial;
+		this.draw( gatherTarget );
+
+		const floats = 4 * PLANES;
+		if ( this.readBuffer.length < floats * count ) this.readBuffer = new Float32Array( floats * count );
 		const buffer = this.readBuffer;
-		for ( let p = 0; p < count; p ++ ) {
-
-			for ( let half = 0; half < HALVES; half ++ ) {
-
-				const texel = 4 * ( HALVES * p + half );
-				const first = 5 * half, coefficients = half === 0 ? 5 : 4;
-				for ( let f = 0; f < 3 * coefficients; f ++ ) {
-
-					target[ offset + SH_FLOATS * p + 3 * first + f ] = buffer[ ( f >> 2 ) * floats + texel + ( f & 3 ) ];
-
-				}
-
-			}
-
-		}
+		this.renderer.readRenderTargetPixels( gatherTarget, 0, 0, PLANES, count, buffer );
+		for ( let p = 0; p < count; p ++ ) target.set( buffer.subarray( floats * p, floats * p + SH_FLOATS ), offset + SH_FLOATS * p );
 
 		this.source = null;
 		this.count = 0;
@@ -361,7 +386,7 @@ export class SHProjector {
 
 	}
 
-	/** Projection and reduction targets for `tiles` and `count`, reused while they are big enough. */
+	/** Projection, reduction and gather targets for `tiles` and `count`, reused while they are big enough. */
 	private ensureTargets( tiles: number, count: number ): void {
 
 		const first = this.levels[ 0 ];
@@ -370,46 +395,46 @@ export class SHProjector {
 		this.disposeTargets();
 		this.levelTiles = tiles;
 		const rows = Math.min( MAX_ROWS / tiles, Math.max( count, 16 ) );
-		const create = ( t: number ) => new WebGLRenderTarget( HALVES * t, rows * t, {
+		const create = ( width: number, height: number, planes: number ) => new WebGLRenderTarget( width, height, {
 			type: FloatType, format: RGBAFormat, minFilter: NearestFilter, magFilter: NearestFilter,
-			depthBuffer: false, stencilBuffer: false, generateMipmaps: false, count: this.multipleTargets ? PLANES : 1,
+			depthBuffer: false, stencilBuffer: false, generateMipmaps: false, count: planes,
 		} );
-		for ( let t = tiles; ; ) {
+		for ( let t = tiles; ; t /= 4 ) {
 
-			if ( this.multipleTargets ) {
-
-				const target = create( t );
-				this.levels.push( [ target, target, target, target ] );
-
-			} else {
-
-				this.levels.push( [ create( t ), create( t ), create( t ), create( t ) ] );
-
-			}
-
-			if ( t === 1 ) break;
-			t /= t % 4 === 0 ? 4 : 2;
+			this.levels.push( this.groups.map( ( group ) => create( t, rows * t, group.count ) ) );
+			if ( t <= GATHER_TILES ) break;
 
 		}
 
+		this.gatherTarget = create( PLANES, rows, 1 );
+
 	}
 
-	/** Texel solid angles of one face (the same on all six), as a float texture. */
+	/**
+	 * Texel solid angles of one face quadrant (the same on all six faces and on the four mirror
+	 * images of a texel), as a float texture. On an odd size the middle row and column are their
+	 * own mirror images, read twice by the shader, so they hold half their solid angle (the middle
+	 * texel a quarter): halving is exact in floating point.
+	 */
 	private solidAngleTexture( size: number, mode: CubeSolidAngleMode ): DataTexture {
 
 		const key = `${size}:${mode}`;
 		let texture = this.solidAngleTextures.get( key );
 		if ( texture ) return texture;
 
-		const data = new Float32Array( size * size );
+		const solidAngle = mode === 'exact' ? cubeTexelSolidAngle : paperTexelSolidAngle;
+		const quadrant = Math.ceil( size / 2 );
+		const data = new Float32Array( quadrant * quadrant );
 		let total = 0;
 		for ( let row = 0; row < size; row ++ ) {
 
 			for ( let column = 0; column < size; column ++ ) {
 
-				const omega = mode === 'exact' ? cubeTexelSolidAngle( column, row, size ) : paperTexelSolidAngle( column, row, size );
-				data[ row * size + column ] = omega;
+				const omega = solidAngle( column, row, size );
 				total += 6 * omega;
+				if ( row >= quadrant || column >= quadrant ) continue;
+				const mirrors = ( 2 * column + 1 === size ? 2 : 1 ) * ( 2 * row + 1 === size ? 2 : 1 );
+				data[ row * quadrant + column ] = omega / mirrors;
 
 			}
 
@@ -418,7 +443,7 @@ export class SHProjector {
 		// The paper's weights are rescaled to sum to 4π (its step 4), like projectCubeMapToSH does.
 		if ( mode === 'paper' ) for ( let i = 0; i < data.length; i ++ ) data[ i ] *= 4 * Math.PI / total;
 
-		texture = new DataTexture( data, size, size, RedFormat, FloatType );
+		texture = new DataTexture( data, quadrant, quadrant, RedFormat, FloatType );
 		texture.minFilter = texture.magFilter = NearestFilter;
 		texture.needsUpdate = true;
 		this.solidAngleTextures.set( key, texture );
@@ -428,7 +453,9 @@ export class SHProjector {
 
 	private disposeTargets(): void {
 
-		for ( const level of this.levels ) for ( const target of new Set( level ) ) target.dispose();
+		for ( const level of this.levels ) for ( const target of level ) target.dispose();
+		this.gatherTarget?.dispose();
+		this.gatherTarget = null;
 		this.levels = [];
 		this.levelTiles = 0;
 
@@ -440,11 +467,20 @@ export class SHProjector {
 		this.disposeTargets();
 		for ( const texture of this.solidAngleTextures.values() ) texture.dispose();
 		this.solidAngleTextures.clear();
-		this.cubeMaterial.dispose();
-		this.equirectMaterial.dispose();
-		this.reduceMaterial.dispose();
+		const materials = [ ...this.cubeMaterials, ...this.equirectMaterials, ...this.reduceMaterials, this.gatherMaterial ];
+		for ( const material of materials ) material.dispose();
 		this.quad.geometry.dispose();
 
 	}
+
+}
+
+/** The renderer's MAX_DRAW_BUFFERS: how many planes one draw can write. */
+function drawBuffers( renderer: WebGLRenderer ): number {
+
+	// A lost context answers null: then WebGL2's guaranteed minimum, right once it is restored.
+	const gl = renderer.getContext() as WebGL2RenderingContext;
+	const value = gl.getParameter( gl.MAX_DRAW_BUFFERS ) as number | null;
+	return typeof value === 'number' && value >= 1 ? value : 4;
 
 }

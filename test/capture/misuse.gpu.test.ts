@@ -83,6 +83,15 @@ describe.skipIf( ! ctx.renderer )( `capture classes: misuse${ctx.skipReason ? ' 
 
 		};
 
+		const construct = ( options: object ) => () => new SHProjector( renderer, options );
+		expect( construct( { drawBuffers: 0 } ) ).toThrow( /^SHProjector: options\.drawBuffers must be an integer in 1\.\.7, got 0/ );
+		expect( construct( { drawBuffers: 2.5 } ) ).toThrow( /^SHProjector: options\.drawBuffers must be an integer in 1\.\.7/ );
+		expect( construct( { drawBuffers: 8 } ) ).toThrow( RangeError );
+		expect( construct( { multipleTargets: 1 } ) ).toThrow( /^SHProjector: options\.multipleTargets/ );
+		// Without multiple targets (headless-gl), one plane per draw whatever drawBuffers says.
+		const single = new SHProjector( renderer, { multipleTargets: false, drawBuffers: 7 } );
+		expect( single.drawBuffers ).toBe( 1 );
+		single.dispose();
 		where( 'begin', () => projector.begin( 'sphere' as never, 8, 1 ), /source is the string "sphere"; expected 'cube' or 'equirect'/ );
 		where( 'begin', () => projector.begin( 'cube', 8, 1, { solidAngle: 'EXACT' as never } ), /options\.solidAngle is the string "EXACT"/ );
 		where( 'begin', () => projector.begin( 'cube', 8, 1, null as never ), /options must be an object/ );
