@@ -23,6 +23,7 @@ import { ProbeWeighting, defaultMoveThreshold, invalidateVisibility } from './Pr
 import { ProbeZones, zoneIndexOf } from './ProbeZones.js';
 import { assertRecaptureArguments, assertSHTarget, readPosition, readVolumeParameters } from './volumeArguments.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
+import type { FromSceneOptions } from './volumeFromScene.js';
 import type { ProbeVolumeUniforms } from './patchMaterial.js';
 
 export type {
@@ -225,7 +226,9 @@ export class LightProbeVolume {
 	 * `captureSettings`) only when every probe and pass is done, so a capture that fails — a lost
 	 * context, a throwing callback — changes nothing.
 	 * With `options.bounces` = n, captures n + 1 times, adding a bounce of diffuse interreflection
-	 * each time (as `captureBounces`, which also returns the statistics of each pass).
+	 * each time (as `captureBounces`, which also returns the statistics of each pass). With
+	 * `options.fit`, captures extra points too and fits the SH (and gradients) to them; a later capture
+	 * of some probes (`recaptureDirty` after an edit) refits, one of every probe without `fit` does not.
 	 */
 	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
 
@@ -235,8 +238,8 @@ export class LightProbeVolume {
 	}
 
 	/**
-	 * What a capture needs of the volume: its registered objects, and the commit of a finished
-	 * capture — SH and dirty set ({@link ProbeEdits.commitCapture}), then the capture settings.
+	 * What a capture needs of the volume: its registered objects, the commit of a finished
+	 * capture — SH and dirty set ({@link ProbeEdits.commitCapture}), then the capture settings — and its fit store.
 	 */
 	[ CAPTURE_ACCESS ](): CaptureAccess {
 
@@ -247,13 +250,15 @@ export class LightProbeVolume {
 
 		};
 
-		return { lit: this.objects.lit, commit };
+		const edits = this.edits;
+		return { lit: this.objects.lit, commit, fit: edits.fit, adoptFit: ( store ) => { edits.fit = store; } };
 
 	}
 
 	/**
 	 * Captures only the dirty probes (moved or added since their last capture; see
-	 * {@link LightProbeVolume.dirtyProbes}); does nothing when there are none. Same options as
+	 * {@link LightProbeVolume.dirtyProbes}) and, for a fitted volume, refits the edited layout to the
+	 * stored fit points; does nothing when there is neither. Same options as
 	 * {@link LightProbeVolume.capture}, without `indices`.
 	 */
 	async recaptureDirty(
@@ -262,8 +267,7 @@ export class LightProbeVolume {
 
 		const where = 'LightProbeVolume.recaptureDirty';
 		assertRecaptureArguments( where, renderer, scene, options );
-		const indices = this.dirtyProbes();
-		if ( indices.length > 0 ) await captureVolume( where, this, renderer, scene, { ...options, indices } );
+		await captureVolume( where, this, renderer, scene, { ...options, indices: this.dirtyProbes() } );
 		return this;
 
 	}
@@ -382,6 +386,19 @@ export class LightProbeVolume {
 		volume.metadata = data.metadata;
 		volume.fitSettings = data.fit ?? null;
 		return volume;
+
+	}
+
+	/**
+	 * A ready volume for a level in one call: candidates in its open space, captured once, reduced to
+	 * `options.budget` probes (or one per `options.spacing`³ of open space) and fitted to the
+	 * candidates' captures, with progress per stage — see {@link FromSceneOptions}. Add the character
+	 * and the scene to it afterwards, as to any volume.
+	 */
+	static async fromScene( renderer: WebGLRenderer, scene: Scene, options: FromSceneOptions ): Promise<LightProbeVolume> {
+
+		const { volumeFromScene } = await import( './volumeFromScene.js' );
+		return volumeFromScene( renderer, scene, options );
 
 	}
 

@@ -7,6 +7,8 @@ import type { ProbeCaptureOptions, ProbeCaptureSettings } from '../capture/Probe
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { TriangleBVH } from '../geometry/TriangleBVH.js';
 import type { ProbeRole } from '../roles.js';
+import type { CaptureProgressCallback } from './captureProbes.js';
+import type { LightProbeVolumeFitOptions } from './fitVolume.js';
 import type { ProbeZoneDefinition } from './ProbeZones.js';
 import type { VisibilityGuard, VisibilityGuardOptions } from './VisibilityGuard.js';
 
@@ -134,9 +136,23 @@ export interface LightProbeVolumeBounceOptions {
 
 }
 
-/** Options of `LightProbeVolume.capture`: capture settings plus per-call options and bounces. */
+/** Options of `LightProbeVolume.capture`: capture settings plus per-call options, bounces and the fit. */
 export interface LightProbeVolumeCaptureOptions
-	extends ProbeCaptureSettings, Omit<ProbeCaptureOptions, 'exclude'>, LightProbeVolumeBounceOptions {
+	extends ProbeCaptureSettings, Omit<ProbeCaptureOptions, 'exclude' | 'onProgress'>, LightProbeVolumeBounceOptions {
+
+	/**
+	 * Called after each probe with the number done and the total of its stage: `'probes'` (each
+	 * pass), then `'fit'` (the fit points of `fit`).
+	 */
+	onProgress?: CaptureProgressCallback;
+
+	/**
+	 * Capture extra points after the probes (`samples`, or a grid at `spacing` over the probes' hull
+	 * in open space) and fit the probes' SH — and with `gradients: true` a gradient per probe — so
+	 * the blended field matches them (`fitProbeSH`; see {@link LightProbeVolumeFitOptions}); sets
+	 * `sh`, `gradients` and `fitSettings`. Not taken with zones.
+	 */
+	fit?: LightProbeVolumeFitOptions;
 
 	/**
 	 * More objects to hide during the capture; objects lit as `'dynamic'` (`add( object )` in mode

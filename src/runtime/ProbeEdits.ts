@@ -12,6 +12,7 @@ import type { LitObject } from './litObjects.js';
 import { MAX_WEIGHTS, invalidateVisibility } from './ProbeWeighting.js';
 import type { ProbeZones } from './ProbeZones.js';
 import { readPosition } from './volumeArguments.js';
+import type { VolumeFit } from './VolumeFit.js';
 
 /** The fields of a `LightProbeVolume` that {@link ProbeEdits} reads and replaces. */
 export interface EditedVolume {
@@ -44,6 +45,12 @@ export class ProbeEdits {
 
 	/** Probes moved or added since they were last captured. */
 	readonly dirty = new Set<number>();
+
+	/**
+	 * The fit of a fitted volume (captured SH and fit samples, `VolumeFit`), kept so that a capture
+	 * after edits refits the edited layout; null when the volume is not fitted.
+	 */
+	fit: VolumeFit | null = null;
 
 	private readonly volume: EditedVolume;
 	private readonly lit: readonly LitObject[];

@@ -118,7 +118,7 @@ export async function captureVolume(
 
 	const access = accessOf( where, volume );
 	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, options );
-	const fitting = await loadFitting( volume, access, ( options as { fit?: unknown } ).fit );
+	const fitting = await loadFitting( volume, access, options.fit );
 	const plan = fitting?.planFit( where, volume, access, options, scene, hiddenObjects( access, exclude ) ) ?? null;
 	if ( indices.length === 0 && plan?.mode !== 'refit' ) return;
 	const points = plan?.points ?? null;
@@ -167,9 +167,16 @@ export async function captureWithBounces(
 	// `exclude` is consumed twice (default mesh selection and every capture): an array, read once.
 	const { indices, exclude } = checkCaptureOptions( where, volume, renderer, scene, capture );
 	const checked = { ...capture, exclude };
-	const fitting = await loadFitting( volume, access, ( capture as { fit?: unknown } ).fit );
+	const fitting = await loadFitting( volume, access, capture.fit );
 	const plan = fitting?.planFit( where, volume, access, capture, scene, hiddenObjects( access, exclude ) ) ?? null;
 	const points = plan?.points ?? null;
+	// Nothing to capture (recaptureDirty with no dirty probe) and nothing to refit: no pass at all.
+	if ( indices.length === 0 && points === null && plan?.mode !== 'refit' ) {
+
+		return { passes: [], staticMeshes: [], vertices: 0, totalMs: 0 };
+
+	}
+
 	const meshes = given ?? findStaticMeshes( volume, scene, checked );
 	// Scenery the volume lights itself (add( scene ), large objects) takes the bounce through its own lighting.
 	const bounced = bounces > 0 && ( meshes.length > 0 || access.lit.some( ( entry ) => ! entry.hidden ) );
@@ -267,7 +274,7 @@ async function bouncePasses(
  */
 async function loadFitting( volume: LightProbeVolume, access: CaptureAccess, fit: unknown ): Promise<typeof import( './fitVolume.js' ) | null> {
 
-	if ( fit === undefined && ( access.fit ?? null ) === null && volume.fitSettings === null ) return null;
+	if ( fit === undefined && access.fit === null && volume.fitSettings === null ) return null;
 	return import( './fitVolume.js' );
 
 }

@@ -38,9 +38,12 @@ export interface CaptureAccess {
 
 	/**
 	 * The volume's fit store — captured SH and fit samples, kept so that a capture after an edit
-	 * refits — or null when the volume is not fitted; a fitting capture sets it.
+	 * refits — or null when the volume is not fitted.
 	 */
-	fit?: VolumeFit | null;
+	readonly fit: VolumeFit | null;
+
+	/** Keeps a new fit store (a fitting capture, `fromScene`), or null: the volume is no longer fitted. */
+	adoptFit( store: VolumeFit | null ): void;
 
 }
 

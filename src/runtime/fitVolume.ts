@@ -84,9 +84,9 @@ export function planFit(
 	const plan: FitPlan = { mode: 'none', points: null, weights: null, settings: null, source: '' };
 	if ( options.fit === undefined ) {
 
-		const fitted = ( access.fit ?? null ) !== null || volume.fitSettings !== null;
+		const fitted = access.fit !== null || volume.fitSettings !== null;
 		if ( options.indices === undefined ) plan.mode = fitted ? 'drop' : 'none';
-		else plan.mode = ( access.fit ?? null ) !== null ? 'refit' : 'none';
+		else plan.mode = access.fit !== null ? 'refit' : 'none';
 		return plan;
 
 	}
@@ -154,7 +154,7 @@ export function planFit(
 export function commitWithFit( plan: FitPlan, volume: LightProbeVolume, access: CaptureAccess, captured: CapturedProbes | null ): void {
 
 	const capture = captured ?? EMPTY_CAPTURE;
-	const store = access.fit ?? null;
+	const store = access.fit;
 	if ( plan.mode === 'none' ) {
 
 		if ( captured !== null ) access.commit( captured );
@@ -167,7 +167,7 @@ export function commitWithFit( plan: FitPlan, volume: LightProbeVolume, access: 
 		access.commit( capture );
 		volume.setGradients( null );
 		volume.fitSettings = null;
-		access.fit = null;
+		access.adoptFit( null );
 		return;
 
 	}
@@ -197,7 +197,7 @@ export function commitWithFit( plan: FitPlan, volume: LightProbeVolume, access: 
 	volume.sh.set( result.sh );
 	volume.setGradients( result.gradients );
 	volume.fitSettings = result.record;
-	access.fit = result.store;
+	access.adoptFit( result.store );
 
 }
 

@@ -182,7 +182,7 @@ export async function volumeFromScene( renderer: WebGLRenderer, scene: Scene, op
 		volume.sh.set( result.sh );
 		volume.setGradients( result.gradients );
 		volume.fitSettings = result.record;
-		volume[ CAPTURE_ACCESS ]().fit = result.store;
+		volume[ CAPTURE_ACCESS ]().adoptFit( result.store );
 
 	}
 

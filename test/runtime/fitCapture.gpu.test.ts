@@ -95,9 +95,7 @@ describe.skipIf( ! ctx.renderer )( `capture option fit: probes fitted to extra c
 	const held = randomPoints( 200, 1.9, 7 );
 	const truth = truthAt( held );
 	const error = ( volume: LightProbeVolume ) => irradianceError( sampled( volume, held ), truth ).mean;
-	const captureWith = ( volume: LightProbeVolume, options: LightProbeVolumeCaptureOptions & { fit?: LightProbeVolumeFitOptions } ) => (
-		volume.capture( renderer, scene, options as LightProbeVolumeCaptureOptions )
-	);
+	const captureWith = ( volume: LightProbeVolume, options: LightProbeVolumeCaptureOptions ) => volume.capture( renderer, scene, options );
 	let plainError = 0, fittedError = 0;
 	beforeAll( async () => {
 
@@ -216,6 +214,47 @@ describe.skipIf( ! ctx.renderer )( `capture option fit: probes fitted to extra c
 
 		expect( calls ).toBe( 6 * 27 + 6 * 10 );
 		expect( state() ).toBe( before );
+
+	} );
+
+	it( 'an edit and recaptureDirty refit the edited layout to the stored fit points, as a fresh fit with the same λ does', async () => {
+
+		const samples = randomPoints( 300, 2, 29 );
+		const volume = new LightProbeVolume( { positions } );
+		await captureWith( volume, { resolution: 16, fit: { samples, gradients: true } } );
+		const first = { ...volume.fitSettings! };
+		volume.moveProbe( 13, [ 0.4, - 0.3, 0.2 ] ); // the centre probe
+		await volume.recaptureDirty( renderer, scene, { resolution: 16 } );
+		expect( volume.dirtyProbes() ).toEqual( [] );
+		// The same samples captured again, the same interpolator (the edited volume's own), the λ chosen before.
+		const fresh = new LightProbeVolume( { positions: volume.positions, interpolator: volume.interpolator } );
+		const { lambda, gradientLambda } = first;
+		await captureWith( fresh, { resolution: 16, fit: { samples, gradients: true, lambda, gradientLambda } } );
+		const scale = Math.max( ...fresh.sh.map( Math.abs ) );
+		for ( let k = 0; k < fresh.sh.length; k ++ ) expect( Math.abs( volume.sh[ k ] - fresh.sh[ k ] ) ).toBeLessThan( 1e-5 * scale );
+		const gradientScale = Math.max( ...fresh.gradients!.map( Math.abs ) );
+		for ( let k = 0; k < fresh.gradients!.length; k ++ ) {
+
+			expect( Math.abs( volume.gradients![ k ] - fresh.gradients![ k ] ) ).toBeLessThan( 1e-5 * gradientScale );
+
+		}
+
+		expect( volume.fitSettings ).toEqual( {
+			samples: 300, gradients: true, lambda: first.lambda, gradientLambda: first.gradientLambda, crossValidationError: null,
+			source: '300 given points; refitted after probe edits',
+		} );
+
+		// Removing a probe needs no capture, but the layout changed: recaptureDirty refits it.
+		const before = volume.sh.slice();
+		volume.removeProbe( 4 );
+		await volume.recaptureDirty( renderer, scene, { resolution: 16 } );
+		expect( Array.from( volume.sh.subarray( 27 * 4, 27 * 5 ) ).every( ( v ) => v === 0 ) ).toBe( true );
+		expect( Array.from( volume.gradients!.subarray( 81 * 4, 81 * 5 ) ).every( ( v ) => v === 0 ) ).toBe( true );
+		expect( Array.from( volume.sh ) ).not.toEqual( Array.from( before ) );
+		// Nothing changed since: recaptureDirty does nothing.
+		const after = volume.sh.slice();
+		await volume.recaptureDirty( renderer, scene, { resolution: 16 } );
+		expect( Array.from( volume.sh ) ).toEqual( Array.from( after ) );
 
 	} );
 
