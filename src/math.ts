@@ -34,6 +34,8 @@ export { PlanarMesh } from './interpolation/PlanarMesh.js';
 export { createProbeInterpolator } from './interpolation/createProbeInterpolator.js';
 export { blendSH } from './interpolation/blendSH.js';
 export { blendGradientSH } from './interpolation/blendGradientSH.js';
+export { fitProbeSH, evaluateGradientField } from './fitting/index.js';
+export type { FitSamples, FitProbeSHOptions, FitProbeSHResult } from './fitting/index.js';
 
 export { TriangleBVH } from './geometry/TriangleBVH.js';
 export { intersectRayTriangle } from './geometry/intersectRayTriangle.js';
