@@ -2,8 +2,8 @@
  * `three-capture-lighting/math` — the library's pure core, free of three.js so it runs in plain
  * Node (bake tools, workers, tests): SH9 projection of cube maps and panoramas, irradiance and
  * the paper's nᵀMn matrices, de-ringing, the exact 3D Delaunay tetrahedralization (static and
- * incremental), the probe interpolators and `blendSH`, triangle queries, and the irradiance
- * error metric used by placement.
+ * incremental), the probe interpolators, `blendSH` and `blendGradientSH`, the least-squares probe
+ * fit (`fitProbeSH`), triangle queries, and the irradiance error metric used by placement.
  */
 
 export { SH_FLOATS } from './validate.js';
