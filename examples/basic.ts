@@ -49,6 +49,10 @@ async function init(): Promise<void> {
 			else await volume.capture( renderer, scene, captureOptions );
 
 		},
+		// "automatic layout (budget 12)": LightProbeVolume.fromScene picks 12 probes in the room's open
+		// space reachable from the middle of the room; "fit to dense captures" fits the probes to a
+		// grid of captures 0.4 m apart (or, for the automatic layout, to all its candidates).
+		automatic: { budget: 12, reachableFrom: [ 0, 1.6, 0 ], fitSpacing: 0.4, capture: { near: 0.02, far: 20 } },
 	} );
 	await demo.start();
 

@@ -2,8 +2,8 @@ import type { Overlay } from './Overlay.js';
 
 /**
  * The progress bar of a capture: probes done / total, the pass with bounces, and the time left,
- * estimated from the probes done so far. Feed it `LightProbeVolume.capture`'s `onProgress` and
- * `captureBounces`' `onPass`.
+ * estimated from the probes done so far; then, for a capture with `fit`, the fit points. Feed it
+ * `LightProbeVolume.capture`'s `onProgress` and `captureBounces`' `onPass`.
  */
 export class CaptureProgress {
 
@@ -14,6 +14,8 @@ export class CaptureProgress {
 	/** Time and probes done (over all passes) at the first progress report: the estimate starts there. */
 	private firstTime = 0;
 	private firstDone = - 1;
+	/** When the fit points' stage started (−1: not yet). */
+	private fitStart = - 1;
 
 	/**
 	 * Shows an empty bar for a capture of `passes` passes (1 + bounces); `what` names it in the label
@@ -28,8 +30,18 @@ export class CaptureProgress {
 
 	}
 
-	/** `onProgress( done, total )` of the capture: `done` of the pass's `total` probes are captured. */
-	probes( done: number, total: number ): void {
+	/**
+	 * `onProgress( done, total, stage )` of the capture: `done` of the pass's `total` probes are
+	 * captured, or (stage `'fit'`) `done` of its `total` fit points.
+	 */
+	probes( done: number, total: number, stage = 'probes' ): void {
+
+		if ( stage === 'fit' ) {
+
+			this.fitPoints( done, total );
+			return;
+
+		}
 
 		const overall = this.pass * total + done, all = this.passes * total;
 		const now = performance.now();
@@ -45,6 +57,16 @@ export class CaptureProgress {
 		const left = measured > 0 ? ( now - this.firstTime ) / measured * ( all - overall ) : NaN;
 		const pass = this.passes > 1 ? `pass ${this.pass + 1} / ${this.passes}: ` : '';
 		this.overlay.progress( `${pass}capturing probe ${done} / ${total} ${this.what} — ${formatTimeLeft( left )}`, overall / all );
+
+	}
+
+	/** The fit points' stage: its own bar and estimate (a point costs what a probe does). */
+	private fitPoints( done: number, total: number ): void {
+
+		const now = performance.now();
+		if ( this.fitStart < 0 || done <= 1 ) this.fitStart = now;
+		const left = done > 1 ? ( now - this.fitStart ) / ( done - 1 ) * ( total - done ) : NaN;
+		this.overlay.progress( `capturing fit point ${done} / ${total} ${this.what} — ${formatTimeLeft( left )}`, done / total );
 
 	}
 

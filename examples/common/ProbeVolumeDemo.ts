@@ -8,6 +8,7 @@ import { withoutAmbientStandIns } from './ambientStandIns.js';
 import { CaptureProgress } from './CaptureProgress.js';
 import { download, fileName } from './download.js';
 import type { DynamicObjects } from './DynamicObjects.js';
+import { AutomaticLayout, type AutomaticSetup } from './AutomaticLayout.js';
 import { createPanel } from './gui.js';
 import { dropProbes, type ProbeLayout } from './layouts.js';
 import { ProbeEditing, type EditableVolume } from './ProbeEditing.js';
@@ -27,9 +28,12 @@ export interface VolumeSetup {
 	addObjects( volume: LightProbeVolume ): void;
 	/**
 	 * Captures the volume's probes (or `options.indices`) with the panel's settings in `options`;
-	 * `options.bounces` > 0: as many diffuse bounces (`captureBounces`).
+	 * `options.bounces` > 0: as many diffuse bounces (`captureBounces`); `options.fit`: fitted to
+	 * dense captures.
 	 */
 	capture( volume: LightProbeVolume, options: CaptureBouncesOptions ): Promise<unknown>;
+	/** The "automatic layout" and "fit to dense captures" toggles (issue 14), when the page has them. */
+	automatic?: AutomaticSetup;
 
 }
 
@@ -56,6 +60,10 @@ export class ProbeVolumeDemo implements EditableVolume {
 	private readonly setup: VolumeSetup;
 	/** The paper's trilinear baseline over a grid layout's probes (same SH), or null. */
 	private trilinear: LightProbeVolume | null = null;
+	/** The automatic layout toggle's fromScene runs, or null when the page has none. */
+	private readonly automatic: AutomaticLayout | null;
+	/** The layout made by fromScene while "automatic layout" is on, else null. */
+	private automaticLayout: ProbeLayout | null = null;
 	/** The BVH of the static scene for the visibility guard, built the first time it is switched on. */
 	private guard: VisibilityGuard | null = null;
 	private capturing = false;
@@ -72,6 +80,8 @@ export class ProbeVolumeDemo implements EditableVolume {
 		if ( viewer.settings.layout === '' ) viewer.settings.layout = this.layouts[ 0 ].name;
 		this.markers = new ProbeMarkers( viewer.helpers, objects.height * 0.12 );
 		this.editing = new ProbeEditing( viewer, this, this.markers );
+		this.automatic = setup.automatic ? new AutomaticLayout( viewer, setup.automatic ) : null;
+		if ( ! this.automatic ) viewer.settings.automatic = viewer.settings.fit = false;
 		exposeForTests( viewer, objects, this );
 
 	}
@@ -82,19 +92,51 @@ export class ProbeVolumeDemo implements EditableVolume {
 		const baked = this.viewer.query.volume;
 		if ( baked ) await this.loadBaked( baked );
 		if ( ! this.viewer.query.hideGui ) this.gui = this.createPanel();
-		if ( ! baked ) {
-
-			this.rebuildVolume();
-			await this.recapture();
-
-		}
+		if ( ! baked ) await this.showLayout();
 
 	}
 
-	/** The layout shown. */
+	/** The layout shown: the automatic one while "automatic layout" is on, else the panel's. */
 	get layout(): ProbeLayout {
 
+		if ( this.automaticLayout ) return this.automaticLayout;
 		return this.layouts.find( ( layout ) => layout.name === this.viewer.settings.layout ) ?? this.layouts[ 0 ];
+
+	}
+
+	/**
+	 * A volume for the layout the panel says, captured: the automatic one (`fromScene`, which
+	 * captures it) or the panel's layout (a new volume, captured with the panel's settings).
+	 */
+	async showLayout(): Promise<void> {
+
+		const { settings } = this.viewer;
+		if ( ! settings.automatic || ! this.automatic ) {
+
+			this.automaticLayout = null;
+			this.rebuildVolume();
+			await this.recapture();
+			return;
+
+		}
+
+		if ( this.capturing ) return;
+		this.capturing = true;
+		const start = performance.now();
+		try {
+
+			const { volume, layout } = await this.automatic.create( settings.fit, [ this.viewer.helpers, ...this.objects.list ] );
+			this.automaticLayout = layout;
+			if ( settings.interpolation === 'trilinear' ) settings.interpolation = 'tetrahedral';
+			this.rebuildVolume( undefined, volume );
+			this.viewer.report.captureMs = performance.now() - start;
+			this.updateMarkers();
+
+		} finally {
+
+			this.capturing = false;
+
+		}
 
 	}
 
@@ -151,19 +193,23 @@ export class ProbeVolumeDemo implements EditableVolume {
 		const progress = new CaptureProgress( overlay, `at ${settings.resolution}²`, settings.bounces + 1 );
 		try {
 
+			// Fitted to a grid of dense captures when "fit to dense captures" is on; an edit's capture (indices) refits.
+			const fit = settings.fit && indices === undefined ? { spacing: this.automatic!.setup.fitSpacing } : undefined;
 			const options: CaptureBouncesOptions = {
-				resolution: settings.resolution, indices, deringing: settings.deringing, nonNegative: settings.nonNegative,
+				resolution: settings.resolution, indices, deringing: settings.deringing, nonNegative: settings.nonNegative, fit,
 				// The objects are added to the active volume, which the capture hides; with the trilinear
 				// baseline active, the tetrahedral volume captured here does not know them: excluded by hand.
 				exclude: [ this.viewer.helpers, ...this.objects.list ],
-				onProgress: ( done: number, total: number ) => progress.probes( done, total ),
+				onProgress: ( done: number, total: number, stage?: string ) => progress.probes( done, total, stage ),
 				bounces: settings.bounces,
 				onPass: ( pass: number ) => progress.passDone( pass ),
 			};
 			// The bounces replace the scenes' faint emissive stand-in for indirect light.
 			if ( settings.bounces > 0 ) await withoutAmbientStandIns( this.viewer.scene, () => this.setup.capture( this.volume, options ) );
 			else await this.setup.capture( this.volume, options );
-			if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
+			// The trilinear baseline blends other weights: fitted, it is fitted for its own (a capture of its own).
+			if ( this.trilinear && fit ) await this.setup.capture( this.trilinear, options );
+			else if ( this.trilinear ) this.trilinear.sh.set( this.volume.sh );
 			report.captureMs = performance.now() - start;
 			this.updateMarkers();
 
@@ -197,7 +243,8 @@ export class ProbeVolumeDemo implements EditableVolume {
 		const highlighted = this.objects.character?.object ?? this.objects.characterCentre( this.characterCentre );
 		this.markers.show( settings.showProbes, settings.showCells, this.volume, highlighted );
 		const cells = `${volume.interpolator.cellCount} ${settings.interpolation === 'trilinear' ? 'boxes' : 'cells'}`;
-		overlay.status( `${settings.layout} — ${settings.interpolation}\n${volume.count} probes, ${cells}\n`
+		const how = this.automatic ? `${this.automatic.describe( volume, this.automaticLayout !== null )}\n` : '';
+		overlay.status( `${this.layout.name} — ${settings.interpolation}\n${volume.count} probes, ${cells}\n${how}`
 			+ `capture ${report.captureMs.toFixed( 0 )} ms at ${settings.resolution}²\n${this.viewer.fps.toFixed( 0 )} fps` );
 
 	}
@@ -243,10 +290,38 @@ export class ProbeVolumeDemo implements EditableVolume {
 
 	}
 
+	/**
+	 * A new volume for the layout shown with the light it has: the same SH — or, when fitted, a new
+	 * capture, since fitted SH (and gradients) hold only for the weights they were fitted to.
+	 */
+	private rebuildKeepingLight(): void {
+
+		if ( this.volume.fitSettings === null && ! this.viewer.settings.fit ) {
+
+			this.rebuildVolume( this.volume.sh );
+			return;
+
+		}
+
+		this.rebuildVolume();
+		this.recapture();
+
+	}
+
 	private createPanel(): GUI {
 
 		return createPanel( this.viewer.settings, this.layouts, {
-			layoutChanged: () => { this.rebuildVolume(); this.recapture(); },
+			layoutChanged: () => {
+
+				// A layout chosen in the list replaces the automatic one.
+				this.viewer.settings.automatic = false;
+				this.gui?.controllersRecursive().forEach( ( controller ) => controller.updateDisplay() );
+				this.showLayout();
+
+			},
+			automatic: this.automatic ? { name: this.automatic.name, changed: () => this.showLayout() } : null,
+			// Fitting changes how the automatic layout is chosen: fromScene runs again; other layouts are captured again, fitted or not.
+			fitChanged: () => ( this.automaticLayout ? this.showLayout() : this.recapture() ),
 			interpolationChanged: () => {
 
 				if ( this.viewer.settings.interpolation === 'trilinear' && ! this.trilinear ) {
@@ -256,11 +331,11 @@ export class ProbeVolumeDemo implements EditableVolume {
 
 				}
 
-				this.rebuildVolume( this.volume.sh );
+				this.rebuildKeepingLight();
 
 			},
 			recapture: () => this.recapture(),
-			rebuildVolume: () => this.rebuildVolume( this.volume.sh ),
+			rebuildVolume: () => this.rebuildKeepingLight(),
 			guardChanged: () => this.applyGuard(),
 			editChanged: () => this.editing.select( - 1 ),
 			addProbe: () => this.editing.addProbe(),

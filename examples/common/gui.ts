@@ -15,6 +15,10 @@ export interface PanelActions {
 	rebuildVolume(): void;
 	/** The visibility guard was switched. */
 	guardChanged(): void;
+	/** "automatic layout (budget N)" (pages that have it, else null): its label, and what to do when switched. */
+	automatic: { name: string; changed(): void } | null;
+	/** "fit to dense captures" was switched. */
+	fitChanged(): void;
 	/** Editing was switched on or off. */
 	editChanged(): void;
 	/** The edit folder's buttons. */
@@ -54,6 +58,14 @@ export function createPanel( settings: DemoSettings, layouts: ProbeLayout[], act
 	beyond.add( settings, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( () => actions.recapture() );
 	beyond.add( settings, 'nonNegative' ).name( 'irradiance never negative' ).onChange( () => actions.recapture() );
 	beyond.add( settings, 'bounces', 0, 3, 1 ).name( 'diffuse bounces' ).onFinishChange( () => actions.recapture() );
+	if ( actions.automatic ) {
+
+		// Issue 14: a layout chosen by LightProbeVolume.fromScene, and probes fitted to dense captures.
+		const automatic = actions.automatic;
+		beyond.add( settings, 'automatic' ).name( automatic.name ).onChange( () => automatic.changed() ).listen();
+		beyond.add( settings, 'fit' ).name( 'fit to dense captures' ).onChange( () => actions.fitChanged() );
+
+	}
 
 	const edit = gui.addFolder( 'edit probes' );
 	edit.add( settings, 'edit' ).name( 'click a probe to move it' ).onChange( () => actions.editChanged() );

@@ -35,6 +35,10 @@ export interface DemoSettings {
 	nonNegative: boolean;
 	/** Diffuse bounces added by capturing again with the static scene lit by the probes. */
 	bounces: number;
+	/** The layout made by `LightProbeVolume.fromScene` instead of the panel's (`auto=1`; pages that have it). */
+	automatic: boolean;
+	/** Probes fitted to dense captures (`fit=1`): the capture's `fit` option, fromScene's fit. */
+	fit: boolean;
 
 }
 
@@ -88,6 +92,8 @@ export function readDemoQuery( search: string ): DemoQuery {
 		deringing: Number( params.get( 'deringing' ) ?? 0 ),
 		nonNegative: params.get( 'nonnegative' ) === '1',
 		bounces: Number( params.get( 'bounces' ) ?? 0 ),
+		automatic: params.get( 'auto' ) === '1',
+		fit: params.get( 'fit' ) === '1',
 	};
 	return {
 		params,
