@@ -18,6 +18,8 @@ import { createHeadlessRenderer } from '../helpers/headlessGL.js';
 import { seededRandom } from '../helpers/pointSets.js';
 import { boxDistance } from '../placement/helpers.js';
 import { createBasicRoom } from '../../scenes/basic.js';
+import { placeCandidates } from '../../src/runtime/probeCandidates.js';
+import { gatherStaticGeometry } from '../../src/runtime/staticGeometry.js';
 
 const ctx = await createHeadlessRenderer( 16, 16 );
 const SKIPPED = ctx.renderer ? '' : ` — SKIPPED: ${ctx.skipReason}`;
@@ -124,6 +126,31 @@ describe.skipIf( ! ctx.renderer )( `LightProbeVolume.fromScene on headless-gl${S
 		expect( volume.gradients?.length ).toBe( 81 * 8 );
 		expect( volume.fitSettings ).toMatchObject( { gradients: true } );
 		expect( volume.fitSettings!.source ).toMatch( /captured at 8²$/ );
+		volume.dispose();
+
+	} );
+
+	it( 'spacing instead of budget: one probe per spacing³ of the open volume (the Basic room: 48 m³ at 1.2 m, 28 probes)', async () => {
+
+		// The open volume as fromScene measures it — the level's box times the share of a grid at half
+		// the spacing not inside geometry — is the whole room: 4 × 3 × 4 = 48 m³ (the bulb holds no grid point).
+		const placed = placeCandidates( 'test', gatherStaticGeometry( scene ), {
+			spacing: 0.6, candidates: 256, measureOpenVolume: true, reachableFrom: Float64Array.from( spawn ),
+		} );
+		expect( placed.openVolume ).toBeCloseTo( 48, 6 );
+		const volume = await volumeFromScene( renderer, scene, { spacing: 1.2, resolution: 8, reachableFrom: spawn, fit: false } );
+		expect( volume.count ).toBe( Math.round( 48 / 1.2 ** 3 ) ); // 27.8
+		volume.dispose();
+
+	} );
+
+	it( 'where: \'walkable\' weights the choice and the fit by the floor\'s height band, and still gives the budget', async () => {
+
+		const volume = await volumeFromScene( renderer, scene, {
+			budget: 8, resolution: 8, candidates: 96, reachableFrom: spawn, where: 'walkable', walkable: { height: 1 },
+		} );
+		expect( volume.count ).toBe( 8 );
+		expect( volume.fitSettings?.samples ).toBeGreaterThan( 8 );
 		volume.dispose();
 
 	} );
