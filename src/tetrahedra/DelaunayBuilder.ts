@@ -1,4 +1,4 @@
-import { orient, inSphere, inSphereTieBreak, inCirclePerturbed } from './predicates.js';
+import { orient, inSphere, inSphereTieBreak, inCirclePerturbed, inSphereStaticBound, orientStaticBound } from './predicates.js';
 import { growInt32 } from './growArrays.js';
 import { scanForCell } from './scanForCell.js';
 
@@ -50,6 +50,9 @@ export class DelaunayBuilder {
 	capacity: number;
 	/** The cell the next point-location walk starts from. */
 	last = 0;
+	/** Static error bounds of the predicates in the walk and the conflict tests (see `limitPoints`). */
+	orientBound = Infinity;
+	sphereBound = Infinity;
 
 	/** Cells of the last conflict region (`findConflicts`), `cavitySize` of them. */
 	cavity = new Int32Array( 256 );
@@ -80,6 +83,18 @@ export class DelaunayBuilder {
 		this.cells = new Int32Array( CELL * this.capacity );
 		this.mark = new Int32Array( this.capacity );
 		this.freeList = new Int32Array( 64 );
+
+	}
+
+	/**
+	 * Promises that every point the builder will see lies in a box of diagonal `extent`, so that the
+	 * walk and the conflict tests may decide most signs with a static error bound (predicates.ts);
+	 * Infinity withdraws the promise (before points beyond that box may come, e.g. edits).
+	 */
+	limitPoints( extent: number ): void {
+
+		this.orientBound = extent === Infinity ? Infinity : orientStaticBound( extent );
+		this.sphereBound = extent === Infinity ? Infinity : inSphereStaticBound( extent );
 
 	}
 
@@ -209,7 +224,7 @@ export class DelaunayBuilder {
 	 */
 	locate( q: number ): number {
 
-		const v = this.cells, p = this.p, random = this.random;
+		const v = this.cells, p = this.p, random = this.random, bound = this.orientBound;
 		let t = this.last;
 		if ( t >= this.used || v[ CELL * t ] === FREE ) t = 0;
 		while ( v[ CELL * t ] === FREE ) t ++;
@@ -234,10 +249,10 @@ export class DelaunayBuilder {
 				const next = v[ k + 4 + i ] >> CELL_SHIFT;
 				if ( next === previous ) continue;
 				let o: number;
-				if ( i === 0 ) o = orient( p, q, b, c, d );
-				else if ( i === 1 ) o = orient( p, a, q, c, d );
-				else if ( i === 2 ) o = orient( p, a, b, q, d );
-				else o = orient( p, a, b, c, q );
+				if ( i === 0 ) o = orient( p, q, b, c, d, bound );
+				else if ( i === 1 ) o = orient( p, a, q, c, d, bound );
+				else if ( i === 2 ) o = orient( p, a, b, q, d, bound );
+				else o = orient( p, a, b, c, q, bound );
 				if ( o < 0 ) {
 
 					previous = t;
@@ -263,7 +278,7 @@ export class DelaunayBuilder {
 		const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 		if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
 
-			const s = inSphere( p, a, b, c, d, q );
+			const s = inSphere( p, a, b, c, d, q, this.sphereBound );
 			if ( s !== 0 ) return s > 0;
 			return inSphereTieBreak( p, a, b, c, d, q ) > 0;
 
@@ -274,28 +289,28 @@ export class DelaunayBuilder {
 		let o: number, f0: number, f1: number, f2: number;
 		if ( a === INF ) {
 
-			o = orient( p, q, b, c, d );
+			o = orient( p, q, b, c, d, this.orientBound );
 			f0 = b;
 			f1 = c;
 			f2 = d;
 
 		} else if ( b === INF ) {
 
-			o = orient( p, a, q, c, d );
+			o = orient( p, a, q, c, d, this.orientBound );
 			f0 = a;
 			f1 = c;
 			f2 = d;
 
 		} else if ( c === INF ) {
 
-			o = orient( p, a, b, q, d );
+			o = orient( p, a, b, q, d, this.orientBound );
 			f0 = a;
 			f1 = b;
 			f2 = d;
 
 		} else {
 
-			o = orient( p, a, b, c, q );
+			o = orient( p, a, b, c, q, this.orientBound );
 			f0 = a;
 			f1 = b;
 			f2 = c;
@@ -328,7 +343,7 @@ export class DelaunayBuilder {
 		// Flood the conflict region (connected, star-shaped from q) and collect its boundary faces.
 		// The scratch arrays live in locals (written back when grown) to keep the loop free of
 		// property loads; finite cells call inSphere directly, ghosts go through inConflict.
-		const v = this.cells, p = this.p;
+		const v = this.cells, p = this.p, sphereBound = this.sphereBound;
 		let stack = this.stack, cavity = this.cavity, boundary = this.boundary;
 		let stackSize = 0, cavitySize = 0, boundarySize = 0;
 		mark[ start ] = inStamp;
@@ -351,7 +366,7 @@ export class DelaunayBuilder {
 					const a = v[ k ], b = v[ k + 1 ], c = v[ k + 2 ], d = v[ k + 3 ];
 					if ( a !== INF && b !== INF && c !== INF && d !== INF ) {
 
-						const s = inSphere( p, a, b, c, d, q );
+						const s = inSphere( p, a, b, c, d, q, sphereBound );
 						conflict = s !== 0 ? s > 0 : inSphereTieBreak( p, a, b, c, d, q ) > 0;
 
 					} else {

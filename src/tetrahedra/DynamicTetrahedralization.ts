@@ -91,6 +91,7 @@ export class DynamicTetrahedralization {
 
 		this.builder = builder;
 		builder.p = this.p;
+		builder.limitPoints( Infinity ); // edits may bring points beyond the initial box
 		this.cells = new DenseCells( builder );
 		this.removal = new VertexRemoval( this.p, capacity, diagonal, planarTolerance );
 		this.lastEdit = this.adopt( builder );

@@ -43,13 +43,39 @@ const ISP_UNDERFLOW = 2 ** - 800;
  * library (which redoes the cheap stage, then escalates) only when it is not: this saves the 12–15
  * argument call on the hot path of the walk and the conflict flood. inSphere adds two cheaper exact
  * steps before the library's expansion arithmetic (see inSphereNearZero).
+ *
+ * Both take an optional static bound (orientStaticBound, inSphereStaticBound of the points' extent):
+ * the first stage's error bound is at most the "permanent" (the determinant's terms in absolute
+ * value) times a constant, and for points within a box of diagonal Δ the permanent is at most
+ * 6Δ³ (orient) or 72Δ⁵ (inSphere); a value beyond that bound is decided before the permanent is
+ * computed. Why it is safe and what it saves: docs/robustness.md.
  */
+
+/**
+ * A bound on orient's first-stage error for any four points whose coordinate differences are at
+ * most `extent` (e.g. the diagonal of their bounding box), for orient's `staticBound`.
+ */
+export function orientStaticBound( extent: number ): number {
+
+	// The permanent is at most 6 Δ³ with the rounded differences, up to (1 + ε)⁹ of rounding.
+	return O3D_BOUND_A * 6 * extent ** 3 * ( 1 + 2 ** - 30 ) + O3D_UNDERFLOW;
+
+}
+
+/** As {@link orientStaticBound}, for inSphere's `staticBound`. */
+export function inSphereStaticBound( extent: number ): number {
+
+	// The permanent is at most 4 lifts · 3 Δ² · 6 Δ³ = 72 Δ⁵, up to (1 + ε)¹² of rounding.
+	return ISP_BOUND_A * 72 * extent ** 5 * ( 1 + 2 ** - 30 ) + ISP_UNDERFLOW;
+
+}
 
 /**
  * Sign of det[ b − a, c − a, d − a ], exact: 1, −1 or 0. (Signs rather than values: a double
  * returned from a call that is not inlined is boxed, one allocation per predicate.)
+ * @param staticBound {@link orientStaticBound} of an extent that holds the four points, or Infinity.
  */
-export function orient( p: Float64Array, a: number, b: number, c: number, d: number ): number {
+export function orient( p: Float64Array, a: number, b: number, c: number, d: number, staticBound = Infinity ): number {
 
 	const a3 = 3 * a, b3 = 3 * b, c3 = 3 * c, d3 = 3 * d;
 	const ax = p[ a3 ], ay = p[ a3 + 1 ], az = p[ a3 + 2 ];
@@ -64,6 +90,7 @@ export function orient( p: Float64Array, a: number, b: number, c: number, d: num
 	const cdxady = cdx * ady, adxcdy = adx * cdy;
 	const adxbdy = adx * bdy, bdxady = bdx * ady;
 	const det = adz * ( bdxcdy - cdxbdy ) + bdz * ( cdxady - adxcdy ) + cdz * ( adxbdy - bdxady );
+	if ( det > staticBound || - det > staticBound ) return det > 0 ? - 1 : 1;
 	const permanent =
 		( Math.abs( bdxcdy ) + Math.abs( cdxbdy ) ) * Math.abs( adz ) +
 		( Math.abs( cdxady ) + Math.abs( adxcdy ) ) * Math.abs( bdz ) +
@@ -107,8 +134,11 @@ export function orientAnyScale( p: Float64Array, a: number, b: number, c: number
 
 }
 
-/** Exact in-sphere sign for a positively oriented tetrahedron abcd: 1 when e is strictly inside, −1 outside, 0 on the sphere. */
-export function inSphere( p: Float64Array, a: number, b: number, c: number, d: number, e: number ): number {
+/**
+ * Exact in-sphere sign for a positively oriented tetrahedron abcd: 1 when e is strictly inside, −1 outside, 0 on the sphere.
+ * @param staticBound {@link inSphereStaticBound} of an extent that holds the five points, or Infinity.
+ */
+export function inSphere( p: Float64Array, a: number, b: number, c: number, d: number, e: number, staticBound = Infinity ): number {
 
 	const a3 = 3 * a, b3 = 3 * b, c3 = 3 * c, d3 = 3 * d, e3 = 3 * e;
 	const ax = p[ a3 ], ay = p[ a3 + 1 ], az = p[ a3 + 2 ];
@@ -142,6 +172,7 @@ export function inSphere( p: Float64Array, a: number, b: number, c: number, d: n
 	const det =
 		( clift * ( dez * ab + aez * bd + bez * da ) - dlift * ( aez * bc - bez * ac + cez * ab ) ) +
 		( alift * ( bez * cd - cez * bd + dez * bc ) - blift * ( cez * da + dez * ac + aez * cd ) );
+	if ( det > staticBound || - det > staticBound ) return det > 0 ? 1 : - 1;
 
 	const aezplus = Math.abs( aez ), bezplus = Math.abs( bez ), cezplus = Math.abs( cez ), dezplus = Math.abs( dez );
 	const aexbeyplus = Math.abs( aexbey ) + Math.abs( bexaey );

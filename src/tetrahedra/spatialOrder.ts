@@ -99,18 +99,15 @@ export function insertionOrder( points: Float64Array, indices: Uint32Array, seed
 	const size = Math.max( maxX - minX, maxY - minY, maxZ - minZ ) || 1;
 	const scale = cells / size;
 
-	// A key and the position in `order` packed in one double: 30 key bits + 23 index bits ≤ 53.
-	const keys = new Float64Array( n );
-	const INDEX_RANGE = 1 << 23;
-	const packed = n < INDEX_RANGE;
+	// The Hilbert index (30 bits) of each point, by position in the shuffled order.
+	const keys = new Uint32Array( n );
 	for ( let i = 0; i < n; i ++ ) {
 
 		const k = 3 * order[ i ];
 		const hx = Math.min( cells, Math.floor( ( points[ k ] - minX ) * scale ) );
 		const hy = Math.min( cells, Math.floor( ( points[ k + 1 ] - minY ) * scale ) );
 		const hz = Math.min( cells, Math.floor( ( points[ k + 2 ] - minZ ) * scale ) );
-		const key = hilbertIndex3( hx, hy, hz, HILBERT_BITS );
-		keys[ i ] = packed ? key * INDEX_RANGE + i : key;
+		keys[ i ] = hilbertIndex3( hx, hy, hz, HILBERT_BITS );
 
 	}
 
@@ -128,10 +125,14 @@ export function insertionOrder( points: Float64Array, indices: Uint32Array, seed
 	bounds.push( end );
 	bounds.reverse();
 
+	// Each round sorted by key, equal keys in shuffled order (a stable sort).
+	const from = new Uint32Array( n ), to = new Uint32Array( n );
 	let start = 0;
 	for ( const stop of bounds ) {
 
-		sortRound( order, keys, start, stop, result, packed, INDEX_RANGE );
+		if ( stop - start < RADIX_MIN ) sortSmallRound( keys, start, stop, from );
+		else radixSortRound( keys, start, stop, from, to );
+		for ( let i = start; i < stop; i ++ ) result[ i ] = order[ from[ i ] ];
 		start = stop;
 
 	}
@@ -140,25 +141,58 @@ export function insertionOrder( points: Float64Array, indices: Uint32Array, seed
 
 }
 
-function sortRound(
-	order: Uint32Array, keys: Float64Array, start: number, stop: number, result: Uint32Array, packed: boolean, indexRange: number,
-): void {
+// Rounds of at least this many points are radix sorted; smaller ones sort packed doubles.
+const RADIX_MIN = 2048;
+const POSITION_RANGE = 2 ** 23;
+const _histogram = new Int32Array( 1024 );
 
-	if ( packed ) {
+/** Positions start … stop − 1 into `out[ start … stop − 1 ]`, sorted by key then position (fewer than 2^23 of them). */
+function sortSmallRound( keys: Uint32Array, start: number, stop: number, out: Uint32Array ): void {
 
-		const round = keys.subarray( start, stop ).slice().sort();
-		for ( let i = 0; i < round.length; i ++ ) {
+	// Key and offset in the round packed in one double: 30 + 23 bits ≤ 53, exact.
+	const packed = new Float64Array( stop - start );
+	for ( let i = 0; i < packed.length; i ++ ) packed[ i ] = keys[ start + i ] * POSITION_RANGE + i;
+	packed.sort();
+	for ( let i = 0; i < packed.length; i ++ ) {
 
-			result[ start + i ] = order[ round[ i ] % indexRange ];
+		const v = packed[ i ];
+		out[ start + i ] = start + v - Math.floor( v / POSITION_RANGE ) * POSITION_RANGE;
+
+	}
+
+}
+
+/** As sortSmallRound, by a least-significant-digit radix sort (three stable passes of 10 key bits). */
+function radixSortRound( keys: Uint32Array, start: number, stop: number, out: Uint32Array, scratch: Uint32Array ): void {
+
+	let source = out, target = scratch;
+	for ( let i = start; i < stop; i ++ ) source[ i ] = i;
+	const histogram = _histogram;
+	for ( let shift = 0; shift < 30; shift += 10 ) {
+
+		histogram.fill( 0 );
+		for ( let i = start; i < stop; i ++ ) histogram[ ( keys[ source[ i ] ] >>> shift ) & 1023 ] ++;
+		let sum = start;
+		for ( let d = 0; d < 1024; d ++ ) {
+
+			const count = histogram[ d ];
+			histogram[ d ] = sum;
+			sum += count;
 
 		}
 
-	} else {
+		for ( let i = start; i < stop; i ++ ) {
 
-		const local = Array.from( { length: stop - start }, ( _, i ) => start + i );
-		local.sort( ( a, b ) => keys[ a ] - keys[ b ] );
-		for ( let i = 0; i < local.length; i ++ ) result[ start + i ] = order[ local[ i ] ];
+			const position = source[ i ];
+			target[ histogram[ ( keys[ position ] >>> shift ) & 1023 ] ++ ] = position;
+
+		}
+
+		const swap = source; source = target; target = swap;
 
 	}
+
+	// Three passes end in `scratch`.
+	for ( let i = start; i < stop; i ++ ) out[ i ] = source[ i ];
 
 }

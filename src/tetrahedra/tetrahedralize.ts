@@ -135,6 +135,7 @@ export function buildDelaunay( caller: string, points: ArrayLike<number>, option
 	}
 
 	const builder = new DelaunayBuilder( p, count, diagonal );
+	builder.limitPoints( diagonal ); // the bounding box of exactly these points
 	insertAll( caller, builder, p, unique, diagonal, planarTolerance, seed );
 	return { builder, p, count, duplicates, diagonal, exponent };
 
