@@ -6,31 +6,51 @@ export interface ExperimentOptions {
 	scene: SceneName;
 	/** Output folder (default experiment/results). */
 	out: string;
-	/** Seed of the ground-truth samples (default 1). Use another one to tune settings. */
+	/** Seed of the ground-truth sample points (default 1). Use another one to tune settings. */
 	seed: number;
-	/** Seed of the dense candidate set the reduction runs on (default 2, never the ground truth's). */
+	/** Seeds of further ground truths the same layouts are judged on (default 3 and 4). */
+	checkSeeds: number[];
+	/** Seed of the dense candidate set the reduction runs on (default 2, never a ground truth's). */
 	denseSeed: number;
+	/** Extra captured fit points in open space (null: the scene's default in config.ts). */
+	fitPoints: number | null;
+	/** Seed of the extra fit points (default 101, never a ground truth's). */
+	fitSeed: number;
 	/** Ground-truth sample count M (default 500). */
 	samples: number;
 	/** Cube face size (default 32). */
 	resolution: number;
-	/** Also write DIR/<scene>.captures.json: the ground truth's and the dense set's positions and SH, and the fixed layouts'. */
-	saveCaptures: boolean;
+	/** The saved captures file to reuse and add to (null: capture everything, save nothing). */
+	captures: string | null;
+	/** Never start the browser: every capture from `captures`, no PNG. */
+	offline: boolean;
+	/** Only make (and save) the captures a run needs; no layouts, no results. */
+	captureOnly: boolean;
 
 }
 
-export const USAGE = `Usage: npm run experiment -- --scene <${SCENES.join( '|' )}> [--out DIR] [--seed N] [--dense-seed N] [--samples M] [--resolution R] [--save-captures]
+export const USAGE = `Usage: npm run experiment -- --scene <${SCENES.join( '|' )}> [--out DIR] [--seed N] [--check-seeds N,N|none]
+       [--dense-seed N] [--fit-points N] [--fit-seed N] [--samples M] [--resolution R] [--save-captures | --captures FILE] [--offline | --capture-only]
 
 Measures the paper's claim (arbitrary probes + tetrahedra reach a regular grid's lighting with
-~20 % of its probes) in headless Chromium: writes DIR/<scene>.json, DIR/<scene>.md and
-DIR/<scene>.png (default DIR: experiment/results).
+~20 % of its probes) and what fitting, placement and gradient probes add, in headless Chromium:
+writes DIR/<scene>.json, DIR/<scene>.md, DIR/<scene>.svg and DIR/<scene>.png (default DIR:
+experiment/results).
 
-  --seed N         seed of the ground-truth sample points (default 1; tune on another one)
-  --dense-seed N   seed of the dense candidate set the automatic reduction runs on (default 2)
-  --samples M      ground-truth points (default 500)
-  --resolution R   cube face size of every capture (default 32)
-  --save-captures  also write DIR/<scene>.captures.json (positions and SH of the ground truth,
-                   the dense set and the fixed layouts) for re-analysis
+  --seed N          seed of the ground-truth sample points (default 1; tune on another one)
+  --check-seeds L   further ground-truth seeds the same layouts are judged on (default 3,4; none)
+  --dense-seed N    seed of the dense candidate set the automatic reduction runs on (default 2)
+  --fit-points N    extra captured points in open space the fits use besides the dense set
+                    (default per scene, config.ts)
+  --fit-seed N      seed of those points (default 101)
+  --samples M       ground-truth points (default 500)
+  --resolution R    cube face size of every capture (default 32)
+  --save-captures   reuse and extend DIR/<scene>.captures.json: every capture and the scene's
+                    geometry, so a later run captures only what is new
+  --captures FILE   the same with another file
+  --offline         no browser: every capture from the saved captures (an error when one is
+                    missing), no PNG
+  --capture-only    only make the captures (saved as with --save-captures); no results
 
 Sponza and Sibenik need the Dabrovic models in the asset folder ../shared/assets/ (or the folder
 named by CAPTURE_LIGHTING_ASSETS); Chromium at $CHROME_PATH, else $CHROMIUM_PATH, else /usr/bin/chromium.`;
@@ -38,7 +58,11 @@ named by CAPTURE_LIGHTING_ASSETS); Chromium at $CHROME_PATH, else $CHROMIUM_PATH
 /** Parses the arguments; throws an Error with a message for the user on bad input. */
 export function parseArguments( argv: readonly string[] ): ExperimentOptions | 'help' {
 
-	const options: Partial<ExperimentOptions> = { out: 'experiment/results', seed: 1, denseSeed: 2, samples: 500, resolution: 32, saveCaptures: false };
+	const options: Partial<ExperimentOptions> = {
+		out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitSeed: 101, samples: 500, resolution: 32,
+		captures: null, offline: false, captureOnly: false,
+	};
+	let saveCaptures = false;
 	for ( let i = 0; i < argv.length; i ++ ) {
 
 		const arg = argv[ i ];
@@ -73,10 +97,25 @@ export function parseArguments( argv: readonly string[] ): ExperimentOptions | '
 
 			case '--out': options.out = value(); break;
 			case '--seed': options.seed = integer( 0, 0xFFFFFFFF ); break;
+			case '--check-seeds': {
+
+				const text = value();
+				const seeds = text === 'none' ? [] : text.split( ',' ).map( Number );
+				if ( ! seeds.every( ( n ) => Number.isInteger( n ) && n >= 0 && n <= 0xFFFFFFFF ) ) throw new Error( `--check-seeds must be integers separated by commas, or none; got "${text}".` );
+				options.checkSeeds = seeds;
+				break;
+
+			}
+
 			case '--dense-seed': options.denseSeed = integer( 0, 0xFFFFFFFF ); break;
+			case '--fit-points': options.fitPoints = integer( 0, 100000 ); break;
+			case '--fit-seed': options.fitSeed = integer( 0, 0xFFFFFFFF ); break;
 			case '--samples': options.samples = integer( 10, 100000 ); break;
 			case '--resolution': options.resolution = integer( 4, 256 ); break;
-			case '--save-captures': options.saveCaptures = true; break;
+			case '--save-captures': saveCaptures = true; break;
+			case '--captures': options.captures = value(); break;
+			case '--offline': options.offline = true; break;
+			case '--capture-only': options.captureOnly = true; break;
 			default: throw new Error( `unknown argument "${arg}".` );
 
 		}
@@ -84,7 +123,20 @@ export function parseArguments( argv: readonly string[] ): ExperimentOptions | '
 	}
 
 	if ( ! options.scene ) throw new Error( '--scene is required.' );
-	if ( options.seed === options.denseSeed ) throw new Error( `--seed and --dense-seed must differ (both ${options.seed}): the reduction must not see the ground truth's points.` );
+	if ( saveCaptures && options.captures !== null ) throw new Error( '--save-captures and --captures name two files; give one.' );
+	if ( options.captureOnly && options.offline ) throw new Error( '--capture-only and --offline exclude each other.' );
+	if ( options.captureOnly && ! saveCaptures && options.captures === null ) saveCaptures = true;
+	if ( saveCaptures || ( options.offline && options.captures === null ) ) options.captures = `${options.out}/${options.scene}.captures.json`;
+	// The placement and the fits must never see a ground truth's points.
+	for ( const truth of [ options.seed!, ...options.checkSeeds! ] ) {
+
+		if ( truth === options.denseSeed ) throw new Error( `--seed/--check-seeds and --dense-seed must differ (both ${truth}): the reduction must not see the ground truth's points.` );
+		if ( truth === options.fitSeed ) throw new Error( `--seed/--check-seeds and --fit-seed must differ (both ${truth}): the fits must not see the ground truth's points.` );
+
+	}
+
+	if ( options.denseSeed === options.fitSeed ) throw new Error( `--dense-seed and --fit-seed must differ (both ${options.fitSeed}).` );
+	options.checkSeeds = options.checkSeeds!.filter( ( s, i, all ) => s !== options.seed && all.indexOf( s ) === i );
 	return options as ExperimentOptions;
 
 }

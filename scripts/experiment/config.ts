@@ -39,6 +39,24 @@ export interface SceneConfig {
 	/** The probe counts the automatic reduction is cut at (prefixes of one greedy run). */
 	autoCounts: number[];
 
+	/**
+	 * Extra fit points (`--fit-points` default): captured in open space besides the dense set, for
+	 * the fits where the dense candidates are too sparse to fit to.
+	 */
+	fitPoints: number;
+
+	/** The probe counts of the fitted automatic layouts (one placement run each). */
+	fitCounts: number[];
+
+	/** Equal storage: gradient layouts of N probes against plain fitted layouts of 4N (pairs [N, 4N]). */
+	equalStorage: [ number, number ][];
+
+	/** "Where characters go": the height band above floor-facing triangles (`WalkableRegion`'s `height`, m). */
+	walkableHeight: number;
+
+	/** The issue's targets for this scene (mean errors, fractions). */
+	targets: SceneTargets;
+
 	/** Files that must be in the asset folder (relative to it). */
 	assets: string[];
 
@@ -46,6 +64,26 @@ export interface SceneConfig {
 	source: string;
 
 	paper: PaperFigures;
+
+}
+
+/** Issue 14's targets for one scene; every target also holds at the grid's own probe count (≤ 0.8× its error). */
+export interface SceneTargets {
+
+	/** An automatic layout of at most this many probes ... */
+	autoProbes: number;
+
+	/** ... at or below this mean error ('grid': the captured paper's grid's). */
+	autoError: number | 'grid';
+
+	/** The hand-made layout, fitted, at or below this mean error (when set). */
+	handFitted?: number;
+
+	/** The best plain (no gradients) fitted automatic layout within `autoProbes`, at or below this (when set). */
+	plainFitted?: number;
+
+	/** The best fitted layout at the paper's grid's probe count: at most this × the captured grid's mean error. */
+	gridCountRatio: number;
 
 }
 
@@ -57,6 +95,9 @@ export const CONFIGS: Record<SceneName, SceneConfig> = {
 		grids: [ [ 2, 2, 2 ], [ 3, 3, 3 ], [ 4, 4, 4 ], [ 5, 5, 5 ], [ 6, 6, 6 ] ],
 		denseSpacing: 0.4, vertexOffset: 0.3, vertexSpacing: 0.4, denseMinSpacing: 0.15,
 		autoCounts: [ 6, 8, 10, 12, 13, 16, 20, 27, 40, 64, 90, 125 ],
+		fitPoints: 0, fitCounts: [ 6, 8, 10, 12, 16, 20, 27, 40, 48, 64 ], equalStorage: [ [ 12, 48 ], [ 16, 64 ] ],
+		walkableHeight: 2,
+		targets: { autoProbes: 12, autoError: 'grid', handFitted: 0.08, gridCountRatio: 0.8 },
 		assets: [],
 		source: '',
 		paper: { gridCounts: [ 4, 4, 4 ], gridProbes: 64, handProbes: 13, boxes: 8, tetrahedra: 14 },
@@ -68,6 +109,9 @@ export const CONFIGS: Record<SceneName, SceneConfig> = {
 		grids: [ [ 4, 2, 2 ], [ 6, 3, 3 ], [ 8, 4, 4 ], [ 12, 6, 6 ] ],
 		denseSpacing: 2.4, vertexOffset: 0.3, vertexSpacing: 2.0, denseMinSpacing: 0.8,
 		autoCounts: [ 22, 43, 64, 86, 130, 216, 300 ],
+		fitPoints: 1600, fitCounts: [ 22, 43, 64, 86, 130, 216, 344, 432 ], equalStorage: [ [ 86, 344 ], [ 108, 432 ] ],
+		walkableHeight: 2,
+		targets: { autoProbes: 86, autoError: 0.115, plainFitted: 0.155, gridCountRatio: 0.8 },
 		assets: [ 'sponza/sponza.obj', 'sponza/sponza.mtl' ],
 		source: 'the Dabrovic Sponza (sponza.obj, sponza.mtl and its textures) from McGuire\'s Computer Graphics Archive, in sponza/',
 		paper: { gridCounts: [ 12, 6, 6 ], gridProbes: 432, handProbes: 85, boxes: 54, tetrahedra: 401 },
@@ -79,6 +123,9 @@ export const CONFIGS: Record<SceneName, SceneConfig> = {
 		grids: [ [ 4, 2, 2 ], [ 6, 3, 3 ], [ 8, 4, 4 ], [ 12, 6, 6 ] ],
 		denseSpacing: 2.0, vertexOffset: 0.3, vertexSpacing: 2.0, denseMinSpacing: 0.8,
 		autoCounts: [ 20, 39, 64, 86, 130, 216 ],
+		fitPoints: 1600, fitCounts: [ 20, 39, 64, 86, 130, 156, 216, 432 ], equalStorage: [ [ 39, 156 ], [ 108, 432 ] ],
+		walkableHeight: 2,
+		targets: { autoProbes: 39, autoError: 0.25, gridCountRatio: 0.8 },
 		assets: [ 'sibenik/sibenik.obj', 'sibenik/untitled.mtl' ],
 		source: 'the Dabrovic Sibenik cathedral (sibenik.obj, untitled.mtl and its textures) from McGuire\'s Computer Graphics Archive, in sibenik/',
 		paper: { gridCounts: [ 12, 6, 6 ], gridProbes: 432, handProbes: 39, boxes: 54, tetrahedra: 124 },

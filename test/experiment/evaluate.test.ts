@@ -3,7 +3,9 @@ import { placeGrid } from '../../src/index.js';
 import { GridInterpolator } from '../../src/math.js';
 import { evaluateLayout, gridValidSamples, predictSH, interpolatorOf, subsetPositions, subsetSH, verdictOf, type LayoutResult } from '../../scripts/experiment/evaluate.js';
 import { parseArguments } from '../../scripts/experiment/cli.js';
-import { layoutTable, logTicks, markdownReport, plotSVG, validateResult, type ExperimentResult } from '../../scripts/experiment/report.js';
+import { logTicks, plotSVG } from '../../scripts/experiment/plot.js';
+import { layoutTable, markdownReport, validateResult, type ExperimentResult } from '../../scripts/experiment/report.js';
+import { checkTargets, equalStorage } from '../../scripts/experiment/targets.js';
 import { mulberry32 } from '../../scripts/experiment/samples.js';
 
 /** SH whose L00 is linear in position (grey), plus a fixed L1 term: a field every layout reproduces exactly inside its hull. */
@@ -36,7 +38,9 @@ function row( name: string, kind: LayoutResult[ 'kind' ], interpolation: LayoutR
 
 	return {
 		name, kind, interpolation, probes, cells: Math.max( 1, probes - 3 ), meanError, p95Error: 2 * meanError, maxError: 3 * meanError,
-		captureMs: probes, probesNotInOpenSpace: 0, ...( counts ? { counts } : {} )
+		captureMs: probes, probesNotInOpenSpace: 0, fitted: false, gradients: false, shFloats: 27 * probes, bakeCaptures: probes,
+		...( counts ? { counts } : {} ),
+		...( kind === 'auto' ? { method: 'reduceProbes' as const } : {} ),
 	};
 
 }
@@ -90,6 +94,47 @@ describe( 'experiment: error aggregation', () => {
 
 	} );
 
+	it( 'blends gradient probes with the runtime formula (exact for a linear field, outside the hull too), and stores 108 floats each', () => {
+
+		// L00 = 2 + 0.3 x − 0.2 y + 0.1 z: probes carrying the field's value and its gradient reproduce it anywhere.
+		const positions = Float64Array.from( [ - 1, 0.5, - 1, 1, 0.5, - 1, 0, 2.5, 0, 0, 0.5, 1 ] );
+		const sh = linearField( positions );
+		const gradients = new Float32Array( 81 * 4 );
+		for ( let p = 0; p < 4; p ++ ) [ 0.3, - 0.2, 0.1 ].forEach( ( g, a ) => gradients.fill( g, 81 * p + 27 * a, 81 * p + 27 * a + 3 ) );
+		const samples = samplesIn( 200, 3 ), truth = linearField( samples );
+		const layout = { name: 'g', kind: 'auto' as const, interpolation: 'tetrahedral' as const, positions, sh, captureMs: 0 };
+		const withGradients = evaluateLayout( { ...layout, gradients }, samples, truth );
+		expect( withGradients.meanError ).toBeLessThan( 1e-5 );
+		expect( withGradients.gradients ).toBe( true );
+		expect( withGradients.shFloats ).toBe( 4 * 108 );
+		// The same probes without gradients: exact inside their hull only (most samples are outside it).
+		const plain = evaluateLayout( layout, samples, truth );
+		expect( plain.meanError ).toBeGreaterThan( 0.01 );
+		expect( plain.shFloats ).toBe( 4 * 27 );
+		expect( plain.fitted ).toBe( false );
+
+	} );
+
+	it( 'measures the walkable samples alone, with their own normaliser', () => {
+
+		const samples = samplesIn( 300, 7 ), truth = linearField( samples );
+		const grid = { min: BOX.min, max: BOX.max, counts: [ 3, 3, 3 ] };
+		const positions = placeGrid( grid.min, grid.max, grid.counts );
+		const low: number[] = [];
+		for ( let i = 0; i < 300; i ++ ) if ( samples[ 3 * i + 1 ] < 1 ) low.push( i );
+		// 10 % too bright everywhere: 10 % over any subset, whatever its own mean irradiance.
+		const bright = linearField( positions ).map( ( v ) => 1.1 * v );
+		const row10 = evaluateLayout( { name: 'b', kind: 'grid', interpolation: 'trilinear', positions, sh: bright, captureMs: 0, grid }, samples, truth, { walkable: low } );
+		expect( row10.meanErrorWalkable ).toBeCloseTo( 0.1, 4 );
+		// Wrong only at the walkable samples' height: the whole volume sees a fraction of it, the walkable column all of it.
+		const shifted = linearField( positions );
+		for ( let p = 0; p < 27; p ++ ) if ( positions[ 3 * p + 1 ] === 0 ) for ( let k = 0; k < 3; k ++ ) shifted[ 27 * p + k ] += 0.5;
+		const rowLow = evaluateLayout( { name: 's', kind: 'grid', interpolation: 'trilinear', positions, sh: shifted, captureMs: 0, grid }, samples, truth, { walkable: low } );
+		expect( rowLow.meanErrorWalkable! ).toBeGreaterThan( 1.5 * rowLow.meanError );
+		expect( evaluateLayout( { name: 'n', kind: 'grid', interpolation: 'trilinear', positions, sh: bright, captureMs: 0, grid }, samples, truth ).meanErrorWalkable ).toBeUndefined();
+
+	} );
+
 	it( 'restricts to the samples whose grid cell has only usable probes, and measures the errors there too', () => {
 
 		const samples = samplesIn( 400, 9 ), truth = linearField( samples );
@@ -107,7 +152,7 @@ describe( 'experiment: error aggregation', () => {
 
 		const positions = grid.positions, sh = linearField( positions );
 		sh.fill( 50, 0, 27 ); // the unusable probe captured garbage
-		const rowResult = evaluateLayout( { name: 'g', kind: 'grid', interpolation: 'trilinear', positions, sh, captureMs: 1, grid: { min: BOX.min, max: BOX.max, counts: [ 3, 3, 3 ] } }, samples, truth, valid );
+		const rowResult = evaluateLayout( { name: 'g', kind: 'grid', interpolation: 'trilinear', positions, sh, captureMs: 1, grid: { min: BOX.min, max: BOX.max, counts: [ 3, 3, 3 ] } }, samples, truth, { gridValid: valid } );
 		expect( rowResult.meanError ).toBeGreaterThan( 0.1 );
 		expect( rowResult.meanErrorGridValid ).toBeLessThan( 1e-5 );
 		expect( rowResult.p95ErrorGridValid ).toBeLessThan( 1e-5 );
@@ -129,7 +174,7 @@ describe( 'experiment: error aggregation', () => {
 		const better = ROWS.map( ( r ) => r.name === 'automatic 12' ? { ...r, meanError: 0.05 } : r );
 		const w = verdictOf( better, PAPER );
 		expect( w.holds ).toBe( true );
-		expect( w.text ).toMatch( /^Holds: 12 automatically placed probes \(18\.8 % of the grid's 64\)/ );
+		expect( w.text ).toMatch( /^Holds: 12 automatically placed probes \(reduceProbes, 18\.8 % of the grid's 64\)/ );
 		expect( () => verdictOf( ROWS.filter( ( r ) => r.kind !== 'grid' ), PAPER ) ).toThrow( /no trilinear grid 4x4x4/ );
 
 	} );
@@ -138,12 +183,17 @@ describe( 'experiment: error aggregation', () => {
 
 describe( 'experiment: output', () => {
 
+	const targets = checkTargets( ROWS, PAPER, { autoProbes: 12, autoError: 'grid', gridCountRatio: 0.8 } );
 	const result: ExperimentResult = {
 		scene: 'basic', samples: 500, layouts: ROWS, verdict: verdictOf( ROWS, PAPER ), paper: PAPER,
+		targets, seeds: [ { seed: 1, walkableSamples: 400, targets, meanError: {}, meanErrorWalkable: {} } ],
+		equalStorage: equalStorage( ROWS, [ [ 12, 48 ] ] ),
 		groundTruth: {
 			seed: 1, region: BOX, minDistance: 0.1, maxSky: 1, drawn: 510, rejectedNear: 10, rejectedInside: 0, rejectedOutside: 0,
-			captureMs: 1000, normals: 26, gridValidSamples: 500
+			captureMs: 1000, normals: 26, gridValidSamples: 500, walkableSamples: 400,
 		},
+		fit: { seed: 101, points: 0, drawn: 0, captureMs: 0, samples: 700 },
+		walkable: { height: 2, floorTriangles: 2 },
 		dense: {
 			seed: 2, probes: 700, fromGrid: 690, fromVertices: 10, captureMs: 2000, reduceMs: 100, selectMs: 100,
 			denseMeanError: { 12: 0.38 }, recaptureMaxDifference: 0
@@ -167,9 +217,9 @@ describe( 'experiment: output', () => {
 
 		const table = layoutTable( ROWS );
 		expect( table.split( '\n' ) ).toHaveLength( 2 + ROWS.length );
-		expect( table ).toContain( '| grid 4x4x4 | trilinear | 64 | 61 boxes | 64 | 8.0 % | 16.0 % | 0 |' );
+		expect( table ).toContain( '| grid 4x4x4 | trilinear | 64 | 61 boxes | 1728 | 64 | 64 | 8.0 % | 16.0 % | 0 |' );
 		const md = markdownReport( result, 'basic.png' );
-		expect( md ).toContain( '**Verdict: Does not hold' );
+		expect( md ).toContain( '**Verdict, captured probes (the paper\'s method): Does not hold' );
 		expect( md ).toContain( '![Basic' );
 		const svg = plotSVG( result, { title: 'Basic' } );
 		expect( svg.startsWith( '<svg' ) && svg.endsWith( '</svg>' ) ).toBe( true );
@@ -182,9 +232,24 @@ describe( 'experiment: output', () => {
 
 	it( 'parses the command line', () => {
 
-		expect( parseArguments( [ '--scene', 'sponza' ] ) ).toEqual( { scene: 'sponza', out: 'experiment/results', seed: 1, denseSeed: 2, samples: 500, resolution: 32, saveCaptures: false } );
+		expect( parseArguments( [ '--scene', 'sponza' ] ) ).toEqual( {
+			scene: 'sponza', out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitSeed: 101, samples: 500, resolution: 32,
+			captures: null, offline: false, captureOnly: false,
+		} );
 		expect( parseArguments( [ '--scene=basic', '--out', 'x', '--seed', '7' ] ) ).toMatchObject( { scene: 'basic', out: 'x', seed: 7 } );
-		expect( parseArguments( [ '--scene', 'basic', '--save-captures' ] ) ).toMatchObject( { saveCaptures: true } );
+		expect( parseArguments( [ '--scene', 'basic', '--save-captures' ] ) ).toMatchObject( { captures: 'experiment/results/basic.captures.json' } );
+		expect( parseArguments( [ '--offline', '--out', 'o', '--scene', 'basic' ] ) ).toMatchObject( { offline: true, captures: 'o/basic.captures.json' } );
+		expect( parseArguments( [ '--scene', 'basic', '--captures', 'c.json', '--capture-only' ] ) ).toMatchObject( { captureOnly: true, captures: 'c.json' } );
+		expect( parseArguments( [ '--scene', 'basic', '--fit-points', '800', '--fit-seed', '9', '--check-seeds', 'none' ] ) ).toMatchObject( { fitPoints: 800, fitSeed: 9, checkSeeds: [] } );
+		// The reported seed is not checked twice.
+		expect( parseArguments( [ '--scene', 'basic', '--seed', '3', '--check-seeds', '3,5,5' ] ) ).toMatchObject( { seed: 3, checkSeeds: [ 5 ] } );
+		expect( () => parseArguments( [ '--scene', 'basic', '--fit-seed', '1' ] ) ).toThrow( /--fit-seed must differ/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--check-seeds', '4,2' ] ) ).toThrow( /--dense-seed must differ/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--check-seeds', '101' ] ) ).toThrow( /--fit-seed must differ/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--fit-seed', '2' ] ) ).toThrow( /--dense-seed and --fit-seed must differ/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--check-seeds', 'x' ] ) ).toThrow( /--check-seeds must be integers/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--save-captures', '--captures', 'c' ] ) ).toThrow( /name two files/ );
+		expect( () => parseArguments( [ '--scene', 'basic', '--offline', '--capture-only' ] ) ).toThrow( /exclude each other/ );
 		expect( parseArguments( [ '--help' ] ) ).toBe( 'help' );
 		expect( () => parseArguments( [] ) ).toThrow( /--scene is required/ );
 		expect( () => parseArguments( [ '--scene', 'kyoto' ] ) ).toThrow( /one of basic, sponza, sibenik/ );
