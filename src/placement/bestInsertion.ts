@@ -4,10 +4,10 @@ import { blendRows, pointIrradianceError } from './irradianceError.js';
 /** What {@link bestInsertion} reads: the dense set and its irradiance tables, as `reduceProbes` holds them. */
 export interface InsertionContext {
 
-	/** Dense positions, x, y, z each. */
+	/** Positions of the points the error is measured at, x, y, z each: the dense candidates first, then any extra fit samples. */
 	points: Float64Array;
 
-	/** Per dense probe, its irradiance at every normal (`irradianceAtNormals`), `stride` floats each. */
+	/** Per point, its irradiance at every normal (`irradianceAtNormals`), `stride` floats each. */
 	truth: Float64Array;
 
 	/** Floats per table row: 3 × the number of normals. */
@@ -16,31 +16,35 @@ export interface InsertionContext {
 	/** The error's normaliser (`irradianceErrorScale`). */
 	scale: number;
 
-	/** Dense indices along a Hilbert curve: the visiting order that keeps each point location short. */
+	/** Point indices along a Hilbert curve: the visiting order that keeps each point location short. */
 	visitOrder: Uint32Array;
 
 	/** Seeded rank per dense probe, for ties. */
 	rank: Uint32Array;
 
+	/** One weight per point (region of interest), or null: all count alike. */
+	weights: Float64Array | null;
+
 }
 
 /**
- * Of the `trials` dense probes not in the subset with the largest error `perPoint`, the one whose
- * insertion lowers the subset's mean error over the dense set most (each trial: a new
- * tetrahedralization of the subset plus it, and one interpolation per dense probe). Ties go to the
+ * Of the `trials` dense probes not in the subset with the largest (weighted) error `perPoint`, the
+ * one whose insertion lowers the subset's (weighted) mean error over the points most (each trial: a
+ * new tetrahedralization of the subset plus it, and one interpolation per point). Ties go to the
  * lower seeded rank. `reduceProbes`' `strategy: 'mean'`.
  * @param order The subset, dense indices.
- * @param selected Per dense probe: 1 when in the subset.
+ * @param selected Per dense probe: 1 when in the subset (its length is the number of dense probes).
  * @returns A dense index, or −1 when no probe is left out.
  */
 export function bestInsertion(
 	context: InsertionContext, order: readonly number[], selected: Uint8Array, perPoint: Float64Array, trials: number,
 ): number {
 
-	const { points, rank } = context, count = points.length / 3;
+	const { points, rank, weights } = context, denseCount = selected.length;
 	const candidates: number[] = [];
-	for ( let p = 0; p < count; p ++ ) if ( selected[ p ] === 0 ) candidates.push( p );
-	candidates.sort( ( a, b ) => perPoint[ b ] - perPoint[ a ] || rank[ a ] - rank[ b ] );
+	for ( let p = 0; p < denseCount; p ++ ) if ( selected[ p ] === 0 ) candidates.push( p );
+	const claim = ( p: number ): number => weights === null ? perPoint[ p ] : weights[ p ] * perPoint[ p ];
+	candidates.sort( ( a, b ) => claim( b ) - claim( a ) || rank[ a ] - rank[ b ] );
 	const subset = new Float64Array( 3 * ( order.length + 1 ) );
 	order.forEach( ( i, s ) => subset.set( points.subarray( 3 * i, 3 * i + 3 ), 3 * s ) );
 	const layout = [ ...order, - 1 ];
@@ -63,23 +67,26 @@ export function bestInsertion(
 
 }
 
-/** Mean error over the dense set of the layout at `subset` (positions) / `layout` (dense indices). */
+/** (Weighted) mean error over the points of the layout at `subset` (positions) / `layout` (dense indices). */
 function meanError( context: InsertionContext, subset: Float64Array, layout: readonly number[] ): number {
 
-	const { points, truth, stride, scale, visitOrder } = context, count = points.length / 3, directions = stride / 3;
+	const { points, truth, stride, scale, visitOrder, weights: pointWeights } = context, count = points.length / 3, directions = stride / 3;
 	const interpolator = createProbeInterpolator( subset );
 	const indices = _indices, weights = _weights, row = rowOf( stride );
-	let hint = - 1, sum = 0;
+	let hint = - 1, sum = 0, total = 0;
 	for ( let v = 0; v < count; v ++ ) {
 
 		const p = visitOrder[ v ];
+		const w = pointWeights === null ? 1 : pointWeights[ p ];
+		total += w;
+		if ( w === 0 ) continue;
 		hint = interpolator.interpolate( points[ 3 * p ], points[ 3 * p + 1 ], points[ 3 * p + 2 ], indices, weights, hint );
 		blendRows( truth, stride, layout, indices, weights, row );
-		sum += pointIrradianceError( row, 0, truth, stride * p, directions, scale );
+		sum += w * pointIrradianceError( row, 0, truth, stride * p, directions, scale );
 
 	}
 
-	return sum / count;
+	return pointWeights === null ? sum / count : sum / total;
 
 }
 

@@ -1,5 +1,5 @@
 import { assertArrayLike, assertPoints, assertSH } from '../validate.js';
-import { evaluateIrradiance } from '../sh/irradiance.js';
+import { irradianceAt } from '../sh/irradiance.js';
 
 /**
  * The 26 directions the error is measured in: from the centre of a 3×3×3 block of cubes to each of
@@ -135,21 +135,61 @@ export function irradianceAtNormals( sh: ArrayLike<number>, normals: ArrayLike<n
 
 	const count = sh.length / 27, directions = normals.length / 3;
 	const out = new Float64Array( 3 * directions * count );
-	const value = new Float64Array( 3 ), normal = new Float64Array( 3 );
-	for ( let p = 0; p < count; p ++ ) {
+	const basis = irradianceBasis( normals );
+	for ( let p = 0; p < count; p ++ ) irradianceRow( sh, 27 * p, basis, out, 3 * directions * p );
+	return out;
 
-		for ( let k = 0; k < directions; k ++ ) {
+}
 
-			normal[ 0 ] = normals[ 3 * k ]; normal[ 1 ] = normals[ 3 * k + 1 ]; normal[ 2 ] = normals[ 3 * k + 2 ];
-			evaluateIrradiance( sh, normal, value, 27 * p );
-			const o = 3 * ( directions * p + k );
-			out[ o ] = value[ 0 ]; out[ o + 1 ] = value[ 1 ]; out[ o + 2 ] = value[ 2 ];
+/**
+ * The factor of each SH coefficient in the irradiance at each normal: `basis[ 9k + b ]` for
+ * coefficient b at normal k, taken from `irradianceAt` itself (a unit coefficient gives its factor
+ * exactly), so {@link irradianceRow} adds the same products in the same order as `evaluateIrradiance`.
+ * @param normals Directions, x, y, z each.
+ */
+export function irradianceBasis( normals: ArrayLike<number> ): Float64Array {
+
+	const directions = normals.length / 3;
+	const basis = new Float64Array( 9 * directions ), unit = new Float64Array( 27 ), value = new Float64Array( 3 );
+	for ( let k = 0; k < directions; k ++ ) {
+
+		for ( let b = 0; b < 9; b ++ ) {
+
+			unit.fill( 0 );
+			unit[ 3 * b ] = 1;
+			irradianceAt( unit, 0, normals[ 3 * k ], normals[ 3 * k + 1 ], normals[ 3 * k + 2 ], value, 0 );
+			basis[ 9 * k + b ] = value[ 0 ];
 
 		}
 
 	}
 
-	return out;
+	return basis;
+
+}
+
+/**
+ * One SH's row of an irradiance table — `evaluateIrradiance` at each normal, the same numbers,
+ * without its argument checks: `out[ outOffset + 3k + c ]` is channel c of E(n_k).
+ * @param sh Holds the SH's 27 floats at `shOffset`.
+ * @param basis {@link irradianceBasis} of the normals.
+ */
+export function irradianceRow( sh: ArrayLike<number>, shOffset: number, basis: Float64Array, out: Float64Array, outOffset: number ): void {
+
+	for ( let k = 0, directions = basis.length / 9; k < directions; k ++ ) {
+
+		const t = 9 * k;
+		const b0 = basis[ t ], b1 = basis[ t + 1 ], b2 = basis[ t + 2 ], b3 = basis[ t + 3 ], b4 = basis[ t + 4 ];
+		const b5 = basis[ t + 5 ], b6 = basis[ t + 6 ], b7 = basis[ t + 7 ], b8 = basis[ t + 8 ];
+		for ( let c = 0; c < 3; c ++ ) {
+
+			const s = shOffset + c;
+			out[ outOffset + 3 * k + c ] = b0 * sh[ s ] + b1 * sh[ s + 3 ] + b2 * sh[ s + 6 ] + b3 * sh[ s + 9 ]
+				+ b4 * sh[ s + 12 ] + b5 * sh[ s + 15 ] + b6 * sh[ s + 18 ] + b7 * sh[ s + 21 ] + b8 * sh[ s + 24 ];
+
+		}
+
+	}
 
 }
 

@@ -1,0 +1,205 @@
+import type { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
+import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+import type { PointGrid } from './PointGrid.js';
+import type { FittedLayout } from './refitLayout.js';
+
+// Barycentric slack: a point this far outside a changed cell (in weight units) still belongs to it.
+const INSIDE_SLACK = 1e-10;
+
+// Two weights closer than this are the same (the same cell, computed from another inverse).
+const SAME_WEIGHT = 1e-12;
+
+/**
+ * The points of a fit set whose interpolation weights a trial edit of a layout changed, with their
+ * new weights: entry f is point `points[ f ]`, blended by local probes `slots[ 4f … 4f + 3 ]` (−1:
+ * none) with `weights[ 4f … ]`. Filled by {@link ChangedPoints.inChangedCells} (a local edit of a
+ * dynamic tetrahedralization) or {@link ChangedPoints.inMesh} (a new interpolator); reused between
+ * trials.
+ */
+export class ChangedPoints {
+
+	/** Entries found by the last call. */
+	count = 0;
+
+	/** Point index of each entry. */
+	points = new Int32Array( 64 );
+
+	/** 4 local probes per entry (−1 for a zero weight). */
+	slots = new Int32Array( 256 );
+
+	/** 4 weights per entry, ≥ 0, summing to 1. */
+	weights = new Float64Array( 256 );
+
+	private readonly seen: Int32Array;
+	private stamp = 0;
+	private queried: Int32Array = new Int32Array( 256 );
+	private readonly cellProbes = new Int32Array( 4 );
+	private readonly cellMatrix = new Float64Array( 12 );
+	private readonly indices = new Uint32Array( 4 );
+	private readonly values = new Float64Array( 4 );
+
+	/** @param pointCount Points in the fit set. */
+	constructor( pointCount: number ) {
+
+		this.seen = new Int32Array( pointCount );
+
+	}
+
+	/**
+	 * The points inside the cells `dynamic`'s last edit created (or renumbered) whose weights there
+	 * differ from `layout`'s. Points outside the hull are not looked at: the edit must have kept it.
+	 * @param idToLocal Local probe of each mesh point id.
+	 * @param grid The fit set's points, for "which lie in this cell's box".
+	 * @returns The number of entries.
+	 */
+	inChangedCells( dynamic: DynamicTetrahedralization, idToLocal: Int32Array, grid: PointGrid, layout: FittedLayout ): number {
+
+		const cells = dynamic.lastEdit.changedCells, tetrahedra = dynamic.tetrahedra, p = dynamic.positions;
+		const points = grid.positions, probes = this.cellProbes, matrix = this.cellMatrix;
+		const stamp = ++ this.stamp;
+		this.count = 0;
+		for ( let k = 0; k < cells.length; k ++ ) {
+
+			const t = cells[ k ];
+			let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
+			for ( let v = 0; v < 4; v ++ ) {
+
+				const id = tetrahedra[ 4 * t + v ], x = p[ 3 * id ], y = p[ 3 * id + 1 ], z = p[ 3 * id + 2 ];
+				probes[ v ] = idToLocal[ id ];
+				if ( x < minX ) minX = x;
+				if ( x > maxX ) maxX = x;
+				if ( y < minY ) minY = y;
+				if ( y > maxY ) maxY = y;
+				if ( z < minZ ) minZ = z;
+				if ( z > maxZ ) maxZ = z;
+
+			}
+
+			writeCellInverse( p, tetrahedra, t, matrix );
+			const query = grid.query( minX, minY, minZ, maxX, maxY, maxZ, this.queried );
+			this.queried = query.out;
+			for ( let q = 0; q < query.count; q ++ ) {
+
+				const j = this.queried[ q ];
+				if ( this.seen[ j ] === stamp ) continue; // already placed in another changed cell
+				const dx = points[ 3 * j ] - matrix[ 9 ], dy = points[ 3 * j + 1 ] - matrix[ 10 ], dz = points[ 3 * j + 2 ] - matrix[ 11 ];
+				const w0 = matrix[ 0 ] * dx + matrix[ 1 ] * dy + matrix[ 2 ] * dz;
+				const w1 = matrix[ 3 ] * dx + matrix[ 4 ] * dy + matrix[ 5 ] * dz;
+				const w2 = matrix[ 6 ] * dx + matrix[ 7 ] * dy + matrix[ 8 ] * dz;
+				const w3 = 1 - w0 - w1 - w2;
+				if ( ! ( w0 >= - INSIDE_SLACK && w1 >= - INSIDE_SLACK && w2 >= - INSIDE_SLACK && w3 >= - INSIDE_SLACK ) ) continue;
+				this.seen[ j ] = stamp;
+				this.record( j, probes, w0, w1, w2, w3 );
+				if ( ! this.sameAsLayout( layout, j ) ) this.count ++;
+
+			}
+
+		}
+
+		return this.count;
+
+	}
+
+	/**
+	 * Every point located in `interpolator` (a layout edited in a way that moves the hull, so outer
+	 * cells change too), kept when its weights differ from `layout`'s or it blends probe `moved`.
+	 * @param visitOrder The points in the order to locate them (short walks).
+	 * @param moved Local probe that moved (−1 for none): its points change even at equal weights.
+	 * @returns The number of entries.
+	 */
+	inMesh(
+		interpolator: ProbeInterpolator, positions: Float64Array, visitOrder: Uint32Array, layout: FittedLayout, moved: number,
+	): number {
+
+		const indices = this.indices, values = this.values, probes = this.cellProbes, slots = layout.slots;
+		let hint = - 1;
+		this.count = 0;
+		for ( let v = 0; v < visitOrder.length; v ++ ) {
+
+			const j = visitOrder[ v ];
+			values.fill( 0 );
+			hint = interpolator.interpolate( positions[ 3 * j ], positions[ 3 * j + 1 ], positions[ 3 * j + 2 ], indices, values, hint );
+			for ( let s = 0; s < 4; s ++ ) probes[ s ] = indices[ s ];
+			this.record( j, probes, values[ 0 ], values[ 1 ], values[ 2 ], values[ 3 ] );
+			const o = 4 * j;
+			const usesMoved = moved >= 0
+				&& ( slots[ o ] === moved || slots[ o + 1 ] === moved || slots[ o + 2 ] === moved || slots[ o + 3 ] === moved );
+			if ( usesMoved || ! this.sameAsLayout( layout, j ) ) this.count ++;
+
+		}
+
+		return this.count;
+
+	}
+
+	/** Writes entry `count` (not yet counted): point j, the 4 probes and their weights (clamped to ≥ 0, summing to 1). */
+	private record( j: number, probes: Int32Array, w0: number, w1: number, w2: number, w3: number ): void {
+
+		const f = this.count;
+		if ( this.points.length <= f ) {
+
+			const points = new Int32Array( 2 * f + 64 ), slots = new Int32Array( 8 * f + 256 );
+			const weights = new Float64Array( 8 * f + 256 );
+			points.set( this.points );
+			slots.set( this.slots );
+			weights.set( this.weights );
+			this.points = points;
+			this.slots = slots;
+			this.weights = weights;
+
+		}
+
+		w0 = Math.max( w0, 0 ); w1 = Math.max( w1, 0 ); w2 = Math.max( w2, 0 ); w3 = Math.max( w3, 0 );
+		const sum = w0 + w1 + w2 + w3, o = 4 * f;
+		this.points[ f ] = j;
+		this.weights[ o ] = w0 / sum; this.weights[ o + 1 ] = w1 / sum;
+		this.weights[ o + 2 ] = w2 / sum; this.weights[ o + 3 ] = w3 / sum;
+		for ( let s = 0; s < 4; s ++ ) this.slots[ o + s ] = this.weights[ o + s ] === 0 ? - 1 : probes[ s ];
+
+	}
+
+	/** Whether entry `count` gives point j the weights it has in the layout (a renumbered cell, or a boundary point). */
+	private sameAsLayout( layout: FittedLayout, j: number ): boolean {
+
+		const slots = layout.slots, weights = layout.slotWeights, f = this.count;
+		for ( let s = 0; s < 4; s ++ ) {
+
+			const i = this.slots[ 4 * f + s ];
+			if ( i < 0 ) continue;
+			let match = false;
+			for ( let r = 0; r < 4 && ! match; r ++ ) {
+
+				match = slots[ 4 * j + r ] === i && Math.abs( weights[ 4 * j + r ] - this.weights[ 4 * f + s ] ) <= SAME_WEIGHT;
+
+			}
+
+			if ( ! match ) return false;
+
+		}
+
+		return true;
+
+	}
+
+}
+
+/**
+ * The inverse of [ p0 − p3, p1 − p3, p2 − p3 ] of tetrahedron t (row-major, 9 floats) and p3 (3
+ * floats) in `out`: (w0, w1, w2) = inverse · (q − p3).
+ */
+function writeCellInverse( p: Float64Array, tetrahedra: Uint32Array, t: number, out: Float64Array ): void {
+
+	const a = 3 * tetrahedra[ 4 * t ], b = 3 * tetrahedra[ 4 * t + 1 ], c = 3 * tetrahedra[ 4 * t + 2 ], d = 3 * tetrahedra[ 4 * t + 3 ];
+	const m00 = p[ a ] - p[ d ], m10 = p[ a + 1 ] - p[ d + 1 ], m20 = p[ a + 2 ] - p[ d + 2 ];
+	const m01 = p[ b ] - p[ d ], m11 = p[ b + 1 ] - p[ d + 1 ], m21 = p[ b + 2 ] - p[ d + 2 ];
+	const m02 = p[ c ] - p[ d ], m12 = p[ c + 1 ] - p[ d + 1 ], m22 = p[ c + 2 ] - p[ d + 2 ];
+	const c00 = m11 * m22 - m12 * m21, c01 = m02 * m21 - m01 * m22, c02 = m01 * m12 - m02 * m11;
+	const c10 = m12 * m20 - m10 * m22, c11 = m00 * m22 - m02 * m20, c12 = m02 * m10 - m00 * m12;
+	const c20 = m10 * m21 - m11 * m20, c21 = m01 * m20 - m00 * m21, c22 = m00 * m11 - m01 * m10;
+	const inverse = 1 / ( m00 * c00 + m01 * c10 + m02 * c20 );
+	out[ 0 ] = c00 * inverse; out[ 1 ] = c01 * inverse; out[ 2 ] = c02 * inverse;
+	out[ 3 ] = c10 * inverse; out[ 4 ] = c11 * inverse; out[ 5 ] = c12 * inverse;
+	out[ 6 ] = c20 * inverse; out[ 7 ] = c21 * inverse; out[ 8 ] = c22 * inverse;
+	out[ 9 ] = p[ d ]; out[ 10 ] = p[ d + 1 ]; out[ 11 ] = p[ d + 2 ];
+
+}
