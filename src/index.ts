@@ -16,6 +16,9 @@ export type {
 	AddOptions, AddProbeOptions, LightProbeVolumeBounceOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters,
 	ProbeLighting, ProbeLightingChoice, ProbeOccluders, ProbePosition, ProbeRole, SampleOptions,
 } from './runtime/LightProbeVolumeOptions.js';
+export type { LightProbeVolumeFitOptions } from './runtime/fitVolume.js';
+export type { FromSceneOptions, FromSceneProgress, FromSceneStage } from './runtime/volumeFromScene.js';
+export type { CaptureProgressCallback, CaptureStage } from './runtime/captureProbes.js';
 export { LightProbeVolumeLoader } from './runtime/LightProbeVolumeLoader.js';
 export type { LightProbeVolumeData, BakedVolumeParameters } from './runtime/LightProbeVolumeLoader.js';
 export { LightProbeVolumeExporter } from './runtime/LightProbeVolumeExporter.js';

@@ -67,8 +67,10 @@ export async function viteBundle(
 		},
 	} ) as Rollup.RollupOutput | Rollup.RollupOutput[];
 	const chunks = ( Array.isArray( output ) ? output : [ output ] ).flatMap( ( o ) => o.output ).filter( ( o ): o is Rollup.OutputChunk => o.type === 'chunk' );
-	if ( chunks.length !== 1 ) throw new Error( `viteBundle: expected one chunk, got ${chunks.length}` );
-	const [ chunk ] = chunks;
+	// Code loaded on demand (the fit, fromScene) goes to other chunks: the entry chunk is what a page loads first.
+	const entryChunks = chunks.filter( ( c ) => c.isEntry );
+	if ( entryChunks.length !== 1 ) throw new Error( `viteBundle: expected one entry chunk, got ${entryChunks.length}` );
+	const [ chunk ] = entryChunks;
 	const modules = Object.entries( chunk.modules )
 		.filter( ( [ , module ] ) => module.renderedLength > 0 )
 		.map( ( [ id ] ) => ( id.startsWith( root ) ? id.slice( root.length ).replace( /^[\\/]/, '' ) : id ).split( sep ).join( '/' ) );
