@@ -1,19 +1,24 @@
-// Irradiance from the probe volume, the paper's quadratic form E(n) = nᵀ M n with n = (x, y, z, 1)
-// (Ramamoorthi & Hanrahan 2001): one 4x4 M per colour channel, set per object from the blended SH.
-uniform mat4 probeVolumeMatrices[ 3 ];
-uniform float probeVolumeIntensity;
+// Irradiance from the probe volume for one object: the paper's quadratic form E(n) = nᵀ M n
+// (Ramamoorthi & Hanrahan 2001), rewritten per draw for the unit view-space normal v = (x, y, z)
+// that three's shaders already hold (viewIrradiance.ts): nine RGB coefficients of 1, x, y, z, x²,
+// y², xy, xz, yz, scaled by the intensity. No transform back to world space, no normalisation.
+uniform vec3 probeVolumeViewIrradiance[ 9 ];
 
-vec3 probeVolumeIrradiance( const in vec3 worldNormal ) {
+vec3 probeVolumeIrradiance( const in vec3 viewNormal ) {
 
-	// No guard against a NaN normal here, unlike probeVolumeIrradianceFromPacked: in this per-object
-	// path, the one every character and prop takes, a select on the normal made the 500-sphere frame
-	// benchmark 1.63× a global LightProbe instead of 1.10× in SwiftShader. A NaN normal (a zero
-	// normal) gives a NaN probe term here exactly as it does with three's own LightProbe.
-	vec4 n = vec4( worldNormal, 1.0 );
-	return probeVolumeIntensity * vec3(
-		dot( n, probeVolumeMatrices[ 0 ] * n ),
-		dot( n, probeVolumeMatrices[ 1 ] * n ),
-		dot( n, probeVolumeMatrices[ 2 ] * n )
-	);
+	// No guard against a NaN normal (unlike probeVolumeIrradianceFromPacked): a select on the normal
+	// in this path, the one every character and prop takes, made the 500-sphere frame bench ~1.5×
+	// slower in SwiftShader. A NaN (zero) normal gives a NaN probe term, as with three's LightProbe.
+	float x = viewNormal.x, y = viewNormal.y, z = viewNormal.z;
+	vec3 e = probeVolumeViewIrradiance[ 0 ];
+	e += probeVolumeViewIrradiance[ 1 ] * x;
+	e += probeVolumeViewIrradiance[ 2 ] * y;
+	e += probeVolumeViewIrradiance[ 3 ] * z;
+	e += probeVolumeViewIrradiance[ 4 ] * ( x * x );
+	e += probeVolumeViewIrradiance[ 5 ] * ( y * y );
+	e += probeVolumeViewIrradiance[ 6 ] * ( x * y );
+	e += probeVolumeViewIrradiance[ 7 ] * ( x * z );
+	e += probeVolumeViewIrradiance[ 8 ] * ( y * z );
+	return e;
 
 }

@@ -1,2 +1,2 @@
 #include <defaultnormal_vertex>
-vProbeVolumeIrradiance = probeVolumeIrradiance( normalize( ( vec4( transformedNormal, 0.0 ) * viewMatrix ).xyz ) );
+vProbeVolumeIrradiance = probeVolumeIrradiance( normalize( transformedNormal ) );

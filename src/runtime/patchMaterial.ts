@@ -1,4 +1,4 @@
-import { Vector3, type Data3DTexture, type Material, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
+import { Vector3, type Camera, type Data3DTexture, type Material, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
 import {
 	probeVolumeIrradianceAttributeVert, probeVolumeIrradianceAttributeVertPars, probeVolumeIrradianceVaryingFragPars,
 	probeVolumeLightsFrag, probeVolumeLightsTextureFrag, probeVolumeLightsVaryingFrag, probeVolumeLightsVertexSHFrag,
@@ -7,11 +7,16 @@ import {
 } from '../shaders.generated.js';
 import { assertNumber, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
+import { VIEW_IRRADIANCE_FLOATS, viewIrradiance } from './viewIrradiance.js';
 
 /** The uniforms a patched material reads; write them yourself, or let a `LightProbeVolume` do it. */
 export interface ProbeVolumeUniforms {
 
-	/** The three 4x4 irradiance matrices (R, G, B), column-major: `irradianceMatrices( sh, value )`. */
+	/**
+	 * The three 4x4 irradiance matrices (R, G, B), column-major, for world-space normals:
+	 * `irradianceMatrices( sh, value )`. Read at every draw, when the material turns them into
+	 * coefficients for the camera's view space (source `'uniform'`).
+	 */
 	probeVolumeMatrices: { value: Float32Array };
 
 	/** Scale of the probe light on this material (the paper's blend into the diffuse term). Default 1. */
@@ -69,7 +74,10 @@ const PATCHED = Symbol( 'three-capture-lighting.patched' );
 
 interface PatchedMaterial extends Material {
 
-	[ PATCHED ]?: { uniforms: ProbeVolumeUniforms; onBeforeCompile: Material[ 'onBeforeCompile' ]; customProgramCacheKey: Material[ 'customProgramCacheKey' ]; variant: string };
+	[ PATCHED ]?: {
+		uniforms: ProbeVolumeUniforms; variant: string; onBeforeCompile: Material[ 'onBeforeCompile' ];
+		customProgramCacheKey: Material[ 'customProgramCacheKey' ]; onBeforeRender: Material[ 'onBeforeRender' ];
+	};
 
 }
 
@@ -79,9 +87,11 @@ interface PatchedMaterial extends Material {
  * 4x4 M per colour channel in uniforms, is added to three's indirect diffuse irradiance (where a
  * `LightProbe`'s term goes; the material's own diffuse response shades it). All patched
  * materials of one type with the same options share one shader program; only uniforms differ.
- * A user `onBeforeCompile` set before patching still runs. `options.source` swaps the per-object
- * matrices for per-vertex attributes or a 3D SH texture (large objects: see `ProbeVertexLighting`,
- * `ProbeTextureLighting`).
+ * A user `onBeforeCompile` or `onBeforeRender` set before patching still runs. With source
+ * `'uniform'` the material's `onBeforeRender` turns the matrices into view-space coefficients at
+ * every draw: a hook set on it after patching must call the one it replaces. `options.source`
+ * swaps the per-object matrices for per-vertex attributes or a 3D SH texture (large objects: see
+ * `ProbeVertexLighting`, `ProbeTextureLighting`).
  *
  * @returns The uniforms: fill `probeVolumeMatrices.value` with `irradianceMatrices( sh )`.
  */
@@ -126,7 +136,9 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 	}
 
-	const previous = { onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey };
+	const previous = {
+		onBeforeCompile: target.onBeforeCompile, customProgramCacheKey: target.customProgramCacheKey, onBeforeRender: target.onBeforeRender,
+	};
 	// three's default key is onBeforeCompile.toString(): evaluate it with the user's hook in place,
 	// or every patched material would share the wrapper's text and one program.
 	const previousKey = () => {
@@ -145,6 +157,21 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 	};
 
+	// The object mode's coefficients depend on the camera: made for each draw, just before three
+	// uploads the material's uniforms (it re-uploads them whenever the material or camera changes).
+	const view = { value: new Float32Array( VIEW_IRRADIANCE_FLOATS ) };
+	if ( source === 'uniform' ) {
+
+		target.onBeforeRender = function ( renderer, scene, camera: Camera, geometry, object, group ) {
+
+			previous.onBeforeRender.call( this, renderer, scene, camera, geometry, object, group );
+			const { probeVolumeMatrices, probeVolumeIntensity } = uniforms;
+			viewIrradiance( probeVolumeMatrices.value, probeVolumeIntensity.value, camera.matrixWorldInverse.elements, view.value );
+
+		};
+
+	}
+
 	target.onBeforeCompile = function ( shader: WebGLProgramParametersWithUniforms, renderer: WebGLRenderer ) {
 
 		previous.onBeforeCompile.call( this, shader, renderer );
@@ -160,6 +187,7 @@ export function patchMaterial( material: Material, options: PatchMaterialOptions
 
 		}
 
+		if ( source === 'uniform' ) shader.uniforms.probeVolumeViewIrradiance = view;
 		injectProbeVolume( shader, variant );
 
 	};
@@ -216,6 +244,7 @@ export function unpatchMaterial( material: Material ): void {
 	if ( ! patch ) return;
 	target.onBeforeCompile = patch.onBeforeCompile;
 	target.customProgramCacheKey = patch.customProgramCacheKey;
+	target.onBeforeRender = patch.onBeforeRender;
 	delete target[ PATCHED ];
 	target.dispose();
 
@@ -224,7 +253,8 @@ export function unpatchMaterial( material: Material ): void {
 // Indirect diffuse irradiance is accumulated in `irradiance` by lights_fragment_begin (in the
 // Standard, Phong, Lambert and Toon shaders alike); the probe term joins it there
 // (shaders/probeVolumeLights*.frag.glsl), before lights_fragment_end hands it to
-// RE_IndirectDiffuse — the same place and space (world normal, no π) as three's LightProbe term.
+// RE_IndirectDiffuse — the same place and units (no π) as three's LightProbe term; the object mode
+// evaluates it for the view-space normal, the other sources for the world normal.
 // The direct scale multiplies reflectedLight's direct terms, which all four declare. The texture
 // variant takes the world position from the view-space one, as three's own light-probe-grid path
 // does: no extra varying.
