@@ -2,7 +2,9 @@
  * Probe placement from meshes: placeFromMeshes on a 100k-triangle mesh (gather the world geometry,
  * candidates from its vertices, TriangleBVH, near-surface and inside classification), and the
  * classification alone on a smaller mesh — with its TriangleBVH versus the same rule on every
- * triangle, and versus the ray-parity vote it replaced (issue 13).
+ * triangle, and versus the ray-parity vote it replaced (issue 13). Then reduceProbes with fit
+ * (re-fit at every insertion, plain and gradient objective, with and without swap passes) on a
+ * Sponza-sized synthetic set, against today's reduceProbes (issue 14).
  */
 
 import * as THREE from 'three';
@@ -15,6 +17,11 @@ import { intersectRayTriangle } from '../src/geometry/intersectRayTriangle.js';
 import { findClosedShells } from '../src/geometry/findClosedShells.js';
 import { facing } from '../src/geometry/windingAlongRay.js';
 import { TriangleBVH } from '../src/geometry/TriangleBVH.js';
+import { reduceProbes, type ReduceProbesOptions, type ReduceProbesResult } from '../src/placement/reduceProbes.js';
+import { irradianceError } from '../src/placement/irradianceError.js';
+import { createProbeInterpolator } from '../src/interpolation/createProbeInterpolator.js';
+import { evaluateGradientField } from '../src/fitting/evaluateGradientField.js';
+import { mulberry32 } from '../src/tetrahedra/spatialOrder.js';
 import { timeRuns } from './stats.js';
 import type { BenchRow } from './types.js';
 
@@ -33,6 +40,14 @@ export const notes = [
 	+ '(inside when most of the 7 rays cross the triangles an odd number of times, TriangleBVH.countCrossings), each building '
 	+ 'its TriangleBVH in the call. Ratio: the new test ÷ parity (the cost of welding corners, finding closed shells and '
 	+ 'tracking first hits). Check: the same classes on this closed mesh, where both rules are right.',
+	'reduceProbes with fit (issue 14): a Sponza-sized synthetic set — 780 candidates on a jittered 13 × 5 × 12 grid in a 30 × 12 × 18 m '
+	+ 'box (each point moved up to 0.3 cell), 1,600 extra fit samples at random in it (fitSamples), reduced to 86 probes; SH from a '
+	+ 'synthetic lit room (sky-blue ambient rising with height, a red wall at x = 0 and a green one at x = 30, three coloured point '
+	+ 'lamps with 1 / r² falloff and their direction in L1 and L2). Output: the layout\'s mean irradianceError on 3,000 held-out '
+	+ 'random points (its own positions, SH and gradients blended as the runtime does), and on the fit set as reduceProbes reports it. '
+	+ 'Today\'s reduceProbes (captured SH): strategy \'worst\' (its default) and \'mean\' (placeProbes\' choice). Fit rows: λ by '
+	+ 'cross-validation once for the steps and again for the final fit; swaps: the default 2 passes. Ratios: ÷ today\'s \'worst\' and '
+	+ '\'mean\'. Target (issue 14, printed, not asserted): reduce + fit ≤ 2 s.',
 ];
 
 const OFFSET = 0.1, MIN_SPACING = 0.06, MIN_DISTANCE = OFFSET / 2;
@@ -84,6 +99,9 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 	} );
 	rows.push( { case: name, subject: 'ray parity (before issue 13)', unit: 'ms', ...parity.summary, output: classCounts( parity.result ) } );
 	material.dispose();
+
+	log( 'reduceProbes with fit, Sponza-sized synthetic set …' );
+	rows.push( ...reduceWithFitRows( log ) );
 	return rows;
 
 }
@@ -194,5 +212,112 @@ function classCounts( classes: Uint8Array ): string {
 	}
 
 	return `${open} open, ${inside} inside, ${near} near`;
+
+}
+
+/** The reduceProbes rows of issue 14: today's reduction and the re-fitting one, on the synthetic Sponza-sized set. */
+function reduceWithFitRows( log: ( message: string ) => void ): BenchRow[] {
+
+	const set = sponzaSizedSet();
+	const count = ( points: Float64Array ): string => ( points.length / 3 ).toLocaleString( 'en-US' );
+	const name = `${count( set.dense )} candidates + ${count( set.extra )} fit samples → 86`;
+	const heldOut = ( result: ReduceProbesResult ): number => irradianceError( evaluateGradientField(
+		createProbeInterpolator( result.positions ), result.positions, result.sh, result.gradients, set.evaluation
+	), set.evaluationSH ).mean;
+	const percent = ( value: number ): string => `${( 100 * value ).toFixed( 1 )} %`;
+	const fitSamples = { positions: set.extra, sh: set.extraSH };
+	const cases: { subject: string; options: Partial<ReduceProbesOptions>; fitted: boolean }[] = [
+		{ subject: 'today\'s reduceProbes, strategy \'worst\'', options: {}, fitted: false },
+		{ subject: 'today\'s reduceProbes, strategy \'mean\'', options: { strategy: 'mean' }, fitted: false },
+		{ subject: 'ours, fit (plain), no swaps', options: { fit: true, swaps: false, fitSamples }, fitted: true },
+		{ subject: 'ours, fit (plain) + swaps', options: { fit: true, fitSamples }, fitted: true },
+		{ subject: 'ours, fit (gradients), no swaps', options: { fit: { gradients: true }, swaps: false, fitSamples }, fitted: true },
+		{ subject: 'ours, fit (gradients) + swaps', options: { fit: { gradients: true }, fitSamples }, fitted: true },
+	];
+	const rows: BenchRow[] = [];
+	let worst = NaN, mean = NaN;
+	for ( const { subject, options, fitted } of cases ) {
+
+		log( `  ${subject} …` );
+		const timed = timeRuns( () => reduceProbes( set.dense, set.denseSH, { targetCount: 86, ...options } ), 3, 20_000 );
+		const result = timed.result, median = timed.summary.median;
+		if ( ! fitted && options.strategy === undefined ) worst = median;
+		if ( ! fitted && options.strategy === 'mean' ) mean = median;
+		const valid = result.keep.length === 86 && ( fitted ? result.fit !== null : result.fit === null );
+		rows.push( {
+			case: name, subject, unit: 'ms', ...timed.summary,
+			output: `held-out error ${percent( heldOut( result ) )}, fit set ${percent( result.error.mean )}`
+				+ ( result.fit ? `, λ ${result.fit.lambda.toPrecision( 2 )}` : '' ),
+			status: valid ? 'valid' : `${result.keep.length} probes`,
+			...( fitted ? {
+				ratios: [ { peer: 'today\'s \'worst\'', ratio: median / worst }, { peer: 'today\'s \'mean\'', ratio: median / mean } ],
+				targets: [ { text: '≤ 2,000 ms', met: median <= 2000 } ],
+			} : {} ),
+		} );
+
+	}
+
+	return rows;
+
+}
+
+/** The synthetic Sponza-sized set of {@link reduceWithFitRows} (seeded: the same numbers every run). */
+function sponzaSizedSet(): {
+	dense: Float64Array; denseSH: Float32Array; extra: Float64Array; extraSH: Float32Array;
+	evaluation: Float64Array; evaluationSH: Float32Array;
+} {
+
+	const random = mulberry32( 7 ), box = [ 30, 12, 18 ], cells = [ 13, 5, 12 ];
+	const dense: number[] = [];
+	for ( let k = 0; k < cells[ 2 ]; k ++ ) for ( let j = 0; j < cells[ 1 ]; j ++ ) for ( let i = 0; i < cells[ 0 ]; i ++ ) {
+
+		[ i, j, k ].forEach( ( c, a ) => dense.push( box[ a ] * ( c + 0.5 + 0.6 * ( random() - 0.5 ) ) / cells[ a ] ) );
+
+	}
+
+	const inBox = ( count: number ): Float64Array => Float64Array.from(
+		{ length: 3 * count }, ( _, i ) => box[ i % 3 ] * ( 0.02 + 0.96 * random() )
+	);
+	const densePositions = Float64Array.from( dense ), extra = inBox( 1600 ), evaluation = inBox( 3000 );
+	return {
+		dense: densePositions, denseSH: litRoom( densePositions ), extra, extraSH: litRoom( extra ),
+		evaluation, evaluationSH: litRoom( evaluation ),
+	};
+
+}
+
+/** SH of a synthetic lit room at each point: ambient rising with height, a red and a green wall, three coloured point lamps. */
+function litRoom( points: Float64Array ): Float32Array {
+
+	const lamps = [ [ 5, 10, 4, 60, 1, 0.9, 0.7 ], [ 22, 9, 12, 40, 0.6, 0.7, 1 ], [ 15, 3, 9, 15, 1, 0.3, 0.2 ] ];
+	const sh = new Float32Array( 9 * points.length );
+	for ( let p = 0; p < points.length / 3; p ++ ) {
+
+		const x = points[ 3 * p ], y = points[ 3 * p + 1 ], z = points[ 3 * p + 2 ], o = 27 * p;
+		for ( let c = 0; c < 3; c ++ ) {
+
+			const wall = c === 0 ? 0.2 * Math.exp( - x / 3 ) : c === 1 ? 0.2 * Math.exp( - ( 30 - x ) / 3 ) : 0.05;
+			sh[ o + c ] = 0.3 + 0.02 * y + wall;
+
+		}
+
+		sh[ o + 3 ] += 0.05; // brighter from above
+		for ( const [ lx, ly, lz, power, r, g, b ] of lamps ) {
+
+			const dx = lx - x, dy = ly - y, dz = lz - z, d2 = dx * dx + dy * dy + dz * dz + 0.5, d = Math.sqrt( d2 ), e = power / d2 / 12;
+			[ r, g, b ].forEach( ( colour, c ) => {
+
+				sh[ o + c ] += e * colour;
+				sh[ o + 3 + c ] += 0.8 * e * colour * dy / d; sh[ o + 6 + c ] += 0.8 * e * colour * dz / d;
+				sh[ o + 9 + c ] += 0.8 * e * colour * dx / d;
+				sh[ o + 18 + c ] += 0.3 * e * colour * ( 3 * dz * dz / d2 - 1 ) / 2;
+
+			} );
+
+		}
+
+	}
+
+	return sh;
 
 }
