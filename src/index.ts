@@ -60,6 +60,10 @@ export { candidatesFromVertices } from './placement/candidatesFromVertices.js';
 export type { CandidatesFromVerticesOptions } from './placement/candidatesFromVertices.js';
 export { reduceProbes } from './placement/reduceProbes.js';
 export type { ReduceProbesOptions, ReduceProbesResult } from './placement/reduceProbes.js';
+export { regionWeights } from './placement/regionOfInterest.js';
+export type { RegionOfInterest, RegionBox } from './placement/regionOfInterest.js';
+export { WalkableRegion } from './placement/walkableRegion.js';
+export type { WalkableRegionOptions } from './placement/walkableRegion.js';
 
 // Baked volumes inside glTF files.
 export { GLTFLightProbeVolumeExporterPlugin } from './gltf/GLTFLightProbeVolumeExporterPlugin.js';
