@@ -8,13 +8,16 @@
  *     [--cgal] [--cpu] [--pairs 7] [--sets 'random 10k,random 100k'] [--verbose]
  *
  * Each pair runs, after warm-up calls of each side: CGAL (a batch of triangulations in one process,
- * their median; with --cgal), then the old and the new code alternately, a batch of calls each
+ * their median; with --cgal; with --cpu too, cgal/delaunay3Cpu.cpp, the same program timed by its
+ * CPU clock, built into build/delaunay3-cpu), then the old and the new code alternately, a batch of calls each
  * (9 below 2,000 points, 5 below 20,000, else 1; a full GC before each call), their medians. It
  * prints per set the medians of the times and of the per-pair ratios, and checks that the new
  * code's output is byte for byte the old one's.
  */
 
-import { mkdirSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, statSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { buildCgal, BUILD_DIR, runCgal } from './cgal.js';
 import { allDatasets, pointCount, writePointsFile } from './datasets.js';
 import { collectGarbage, summarize } from './stats.js';
@@ -40,6 +43,20 @@ function sameBytes( a: ArrayBufferView, b: ArrayBufferView ): boolean {
 // --cpu: time the process's CPU (user + system) instead of the wall clock, which on an
 // oversubscribed machine also counts the time the process waited for a core.
 const cpuClock = process.argv.includes( '--cpu' );
+
+/** Compiles cgal/delaunay3Cpu.cpp when it is newer than its binary (as cgal.ts does for delaunay3.cpp). */
+function buildCgalCpu(): string {
+
+	const source = fileURLToPath( new URL( './cgal/delaunay3Cpu.cpp', import.meta.url ) ), binary = BUILD_DIR + 'delaunay3-cpu';
+	if ( ! existsSync( binary ) || statSync( binary ).mtimeMs < statSync( source ).mtimeMs ) {
+
+		execFileSync( 'g++', [ '-O2', '-DNDEBUG', '-std=c++17', source, '-o', binary, '-lgmp' ] );
+
+	}
+
+	return binary;
+
+}
 
 /** Milliseconds of one call, after a full GC. */
 function timeOnce( fn: Tetrahedralize, points: Float64Array ): number {
@@ -69,9 +86,10 @@ async function main(): Promise<void> {
 
 	const current = ( await import( '../src/tetrahedra/tetrahedralize.js' ) ).tetrahedralize as Tetrahedralize;
 	const old = ( await import( oldPath ) ).tetrahedralize as Tetrahedralize;
-	const cgal = withCgal ? ( await buildCgal( ( message ) => process.stderr.write( message + '\n' ) ) ).binary : null;
-	if ( withCgal && ! cgal ) throw new Error( 'CGAL is not available (bench/cgal.ts buildCgal)' );
 	mkdirSync( BUILD_DIR, { recursive: true } );
+	let cgal = withCgal ? ( await buildCgal( ( message ) => process.stderr.write( message + '\n' ) ) ).binary : null;
+	if ( withCgal && ! cgal ) throw new Error( 'CGAL is not available (bench/cgal.ts buildCgal)' );
+	if ( cgal && cpuClock ) cgal = buildCgalCpu();
 
 	const rows: string[] = [];
 	for ( const dataset of allDatasets().filter( ( d ) => ! wanted || wanted.includes( d.name ) ) ) {

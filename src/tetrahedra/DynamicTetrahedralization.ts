@@ -70,7 +70,7 @@ export class DynamicTetrahedralization {
 	 */
 	constructor( positions: ArrayLike<number>, options: TetrahedralizeOptions = {} ) {
 
-		const { builder, p, count, duplicates, diagonal, exponent } = buildDelaunay( CALLER, positions, options );
+		const { builder, ids, p, count, duplicates, diagonal, exponent } = buildDelaunay( CALLER, positions, options );
 		const { duplicateTolerance, planarTolerance, seed } = readOptions( CALLER, options );
 		this.duplicates = duplicates;
 		this.planarTolerance = planarTolerance;
@@ -90,7 +90,7 @@ export class DynamicTetrahedralization {
 		this.vertexCell = new Int32Array( capacity ).fill( - 1 );
 
 		this.builder = builder;
-		builder.p = this.p;
+		builder.renumber( ids, this.p );
 		builder.limitPoints( Infinity ); // edits may bring points beyond the initial box
 		this.cells = new DenseCells( builder );
 		this.removal = new VertexRemoval( this.p, capacity, diagonal, planarTolerance );
@@ -401,7 +401,7 @@ export class DynamicTetrahedralization {
 		const diagonal = this.points.frame.diagonal, builder = new DelaunayBuilder( p, this._pointCount, diagonal );
 		try {
 
-			insertAll( where, builder, p, ids, diagonal, this.planarTolerance, this.seed );
+			builder.renumber( insertAll( where, builder, p, ids, diagonal, this.planarTolerance, this.seed ), p );
 
 		} catch ( error ) {
 
@@ -427,7 +427,7 @@ export class DynamicTetrahedralization {
 		const w = this.points.duplicateOf( index, index, this._pointCount, this.active, frame );
 		if ( w >= 0 ) this.throwDuplicate( where, index, w, [ x, y, z ] );
 		const builder = new DelaunayBuilder( frame.local, this._pointCount + 1, frame.diagonal );
-		insertAll( where, builder, frame.local, ids, frame.diagonal, this.planarTolerance, this.seed );
+		builder.renumber( insertAll( where, builder, frame.local, ids, frame.diagonal, this.planarTolerance, this.seed ), frame.local );
 
 		// Commit.
 		this.points.frame = frame;

@@ -81,8 +81,8 @@ export function tetrahedralize( points: ArrayLike<number>, options: Tetrahedrali
  */
 export function tetrahedralizeFor( caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions = {} ): Tetrahedralization {
 
-	const { builder, duplicates } = buildDelaunay( caller, points, options );
-	const result = { ...finiteCells( builder ), duplicates };
+	const { builder, ids, duplicates } = buildDelaunay( caller, points, options );
+	const result = { ...finiteCells( builder, ids ), duplicates };
 	builder.retire();
 	return result;
 
@@ -109,11 +109,12 @@ export function readOptions( caller: string, options: TetrahedralizeOptions | un
  * and options, copies the points scaled by 2^−exponent to unit size (`normalizePoints`), merges
  * duplicates, rejects degenerate sets and inserts every kept point (BRIO + Hilbert order).
  * @param caller Function name for error messages.
- * @returns The builder over `p` (the normalised copy), and the normalised diagonal.
+ * @returns The builder, numbered as `insertAll` leaves it (`ids`), `p` (the normalised copy), and
+ *   the normalised diagonal.
  * @internal
  */
 export function buildDelaunay( caller: string, points: ArrayLike<number>, options: TetrahedralizeOptions | undefined ): {
-	builder: DelaunayBuilder; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number; exponent: number;
+	builder: DelaunayBuilder; ids: Uint32Array; p: Float64Array; count: number; duplicates: Uint32Array; diagonal: number; exponent: number;
 } {
 
 	const count = assertPoints( caller, 'points', points );
@@ -136,21 +137,24 @@ export function buildDelaunay( caller: string, points: ArrayLike<number>, option
 
 	const builder = new DelaunayBuilder( p, count, diagonal );
 	builder.limitPoints( diagonal ); // the bounding box of exactly these points
-	insertAll( caller, builder, p, unique, diagonal, planarTolerance, seed );
-	return { builder, p, count, duplicates, diagonal, exponent };
+	const ids = insertAll( caller, builder, p, unique, diagonal, planarTolerance, seed );
+	return { builder, ids, p, count, duplicates, diagonal, exponent };
 
 }
 
 /**
  * Builds the Delaunay tetrahedralization of the points `indices` of `p` (distinct, at least 4) in
- * an empty `builder`: initial tetrahedron, then the rest in BRIO + Hilbert order.
+ * an empty `builder`: initial tetrahedron, then the rest in BRIO + Hilbert order. The builder is left
+ * on a copy of the points renumbered in insertion order: its vertex v is point `ids[ v ]` of `p`
+ * (`builder.renumber( ids, p )` brings it back to `p`'s numbering).
+ * @returns `ids`.
  * @throws {DegenerateInputError} when the points are collinear or coplanar (before touching `builder`).
  * @internal
  */
 export function insertAll(
 	caller: string, builder: DelaunayBuilder, p: Float64Array, indices: Uint32Array,
 	diagonal: number, planarTolerance: number, seed: number,
-): void {
+): Uint32Array {
 
 	const initial = findInitialTetrahedron( caller, p, indices, diagonal, planarTolerance );
 
@@ -180,34 +184,37 @@ export function insertAll(
 	builder.p = local;
 	builder.start( [ 0, 1, 2, 3 ] );
 	for ( let i = 4; i < ids.length; i ++ ) builder.insert( i );
-	builder.renumber( ids, p );
+	return ids;
 
 }
 
-/** Compacts the finite cells of `builder` into the output arrays. */
-function finiteCells( builder: DelaunayBuilder ): { tetrahedra: Uint32Array; neighbors: Int32Array } {
+/**
+ * Compacts the finite cells of `builder` (numbered as `insertAll` left it) into the output arrays,
+ * vertex v of a cell becoming point `ids[ v ]`.
+ */
+function finiteCells( builder: DelaunayBuilder, ids: Uint32Array ): { tetrahedra: Uint32Array; neighbors: Int32Array } {
 
 	const v = builder.cells, used = builder.used;
-	const index = new Int32Array( used ).fill( - 1 );
+	const index = new Int32Array( used );
 	let count = 0;
 	for ( let t = 0; t < used; t ++ ) {
 
 		const k = CELL * t;
 		// FREE is also negative, so one test per vertex rules out released slots and ghosts.
-		if ( v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ) index[ t ] = count ++;
+		index[ t ] = v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ? count ++ : - 1;
 
 	}
 
 	const tetrahedra = new Uint32Array( 4 * count );
 	const neighbors = new Int32Array( 4 * count );
-	for ( let t = 0; t < used; t ++ ) {
+	for ( let t = 0, o = 0; t < used; t ++ ) {
 
-		const o = index[ t ];
-		if ( o < 0 ) continue;
-		for ( let i = 0; i < 4; i ++ ) {
+		if ( index[ t ] < 0 ) continue;
+		const k = CELL * t;
+		for ( let i = 0; i < 4; i ++, o ++ ) {
 
-			tetrahedra[ 4 * o + i ] = v[ CELL * t + i ];
-			neighbors[ 4 * o + i ] = index[ v[ CELL * t + 4 + i ] >> CELL_SHIFT ];
+			tetrahedra[ o ] = ids[ v[ k + i ] ];
+			neighbors[ o ] = index[ v[ k + 4 + i ] >> CELL_SHIFT ];
 
 		}
 
