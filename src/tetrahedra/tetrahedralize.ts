@@ -197,26 +197,23 @@ function finiteCells( builder: DelaunayBuilder, ids: Uint32Array ): { tetrahedra
 	const v = builder.cells, used = builder.used;
 	const index = new Int32Array( used );
 	let count = 0;
-	for ( let t = 0; t < used; t ++ ) {
+	for ( let t = 0, k = 0; t < used; t ++, k += CELL ) {
 
-		const k = CELL * t;
-		// FREE is also negative, so one test per vertex rules out released slots and ghosts.
-		index[ t ] = v[ k ] >= 0 && v[ k + 1 ] >= 0 && v[ k + 2 ] >= 0 && v[ k + 3 ] >= 0 ? count ++ : - 1;
+		// FREE and INF are negative, so one sign test of the four vertices ORed rules out released slots and ghosts.
+		index[ t ] = ( v[ k ] | v[ k + 1 ] | v[ k + 2 ] | v[ k + 3 ] ) >= 0 ? count ++ : - 1;
 
 	}
 
 	const tetrahedra = new Uint32Array( 4 * count );
 	const neighbors = new Int32Array( 4 * count );
-	for ( let t = 0, o = 0; t < used; t ++ ) {
+	for ( let t = 0, k = 0, o = 0; t < used; t ++, k += CELL ) {
 
 		if ( index[ t ] < 0 ) continue;
-		const k = CELL * t;
-		for ( let i = 0; i < 4; i ++, o ++ ) {
-
-			tetrahedra[ o ] = ids[ v[ k + i ] ];
-			neighbors[ o ] = index[ v[ k + 4 + i ] >> CELL_SHIFT ];
-
-		}
+		tetrahedra[ o ] = ids[ v[ k ] ]; tetrahedra[ o + 1 ] = ids[ v[ k + 1 ] ];
+		tetrahedra[ o + 2 ] = ids[ v[ k + 2 ] ]; tetrahedra[ o + 3 ] = ids[ v[ k + 3 ] ];
+		neighbors[ o ] = index[ v[ k + 4 ] >> CELL_SHIFT ]; neighbors[ o + 1 ] = index[ v[ k + 5 ] >> CELL_SHIFT ];
+		neighbors[ o + 2 ] = index[ v[ k + 6 ] >> CELL_SHIFT ]; neighbors[ o + 3 ] = index[ v[ k + 7 ] >> CELL_SHIFT ];
+		o += 4;
 
 	}
 
