@@ -87,6 +87,29 @@ export function fitProbeSH(
 	samples: FitSamples, options?: FitProbeSHOptions,
 ): FitProbeSHResult {
 
+	return fitProbes( interpolator, probePositions, probeSH, samples, options, true );
+
+}
+
+/**
+ * {@link fitProbeSH} without measuring `fitError` (NaN): for callers that measure the fitted field
+ * themselves (reduceProbes' steps), where that pass over the samples is wasted. Not public.
+ */
+export function fitProbeSHUnmeasured(
+	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
+	samples: FitSamples, options?: FitProbeSHOptions,
+): FitProbeSHResult {
+
+	return fitProbes( interpolator, probePositions, probeSH, samples, options, false );
+
+}
+
+/** {@link fitProbeSH}, with `fitError` measured or left NaN. */
+function fitProbes(
+	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
+	samples: FitSamples, options: FitProbeSHOptions | undefined, measureFitError: boolean,
+): FitProbeSHResult {
+
 	const where = 'fitProbeSH';
 	const checked = checkFitArguments( where, interpolator, probePositions, probeSH, samples, options );
 	const { positions, sh: truth, weights, gradients } = checked;
@@ -149,7 +172,7 @@ export function fitProbeSH(
 
 	return {
 		sh, gradients: gradientField, lambda, gradientLambda, crossValidationError,
-		fitError: storedFitError( design, sh, gradientField, truth, weights, scale ),
+		fitError: measureFitError ? storedFitError( design, sh, gradientField, truth, weights, scale ) : NaN,
 	};
 
 }

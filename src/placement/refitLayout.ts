@@ -1,7 +1,7 @@
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import { fitProbeSH, type FitProbeSHResult } from '../fitting/fitProbeSH.js';
+import { fitProbeSHUnmeasured, type FitProbeSHResult } from '../fitting/fitProbeSH.js';
 import {
 	irradianceAtNormals, irradianceBasis, irradianceErrorScale, irradianceRow, summarizeErrors,
 	type IrradianceErrorSummary,
@@ -123,9 +123,9 @@ export function createRefitContext( where: string, settings: ReduceSettings ): R
 
 }
 
-// Scratch of `fitLayout` and `predictedError`: one point's slots and predicted irradiance row (grown to the largest stride).
+// Scratch of `fitLayout`: one point's slots and weights; of `predictedError`: its blending probes' row offsets and factors.
 const _indices = new Uint32Array( 4 ), _weights = new Float64Array( 4 );
-let _row = new Float64Array( 78 );
+const _slotBase = new Int32Array( 4 ), _slotFactor = new Float64Array( 16 );
 
 /**
  * Fits the layout `order` (dense indices) with `fitProbeSH` over the whole fit set and measures every
@@ -148,7 +148,8 @@ export function fitLayout(
 	} );
 
 	const interpolator = createProbeInterpolator( positions );
-	const result = fitProbeSH( interpolator, positions, captured, { positions: points, sh, weights: context.givenWeights }, {
+	// The fit's own error pass is skipped: every point's error is measured below, as the runtime blends it.
+	const result = fitProbeSHUnmeasured( interpolator, positions, captured, { positions: points, sh, weights: context.givenWeights }, {
 		gradients, lambda, gradientLambda: gradients ? gradientLambda : 0, nonNegative: fit.nonNegative,
 	} );
 
@@ -237,45 +238,102 @@ export function predictedError(
 ): number {
 
 	const { positions, stride: rowStride } = context;
-	if ( _row.length < rowStride ) _row = new Float64Array( rowStride );
-	const row = _row;
-	row.fill( 0, 0, rowStride );
 	const x = positions[ 3 * j ], y = positions[ 3 * j + 1 ], z = positions[ 3 * j + 2 ];
+
+	// The blending probes, in slot order (the sums' order, so the result is the same to the bit); unused
+	// ones get weight 0 and the first one's rows: they add ±0, which changes no error.
+	const base = _slotBase, factor = _slotFactor;
+	let n = 0;
 	for ( let s = 0; s < 4; s ++ ) {
 
 		const i = slots[ slotOffset + s ];
 		if ( i < 0 ) continue;
-		const w = slotWeights[ slotOffset + s ], base = rowStride * stride * i;
-		if ( stride === 1 ) {
+		const w = slotWeights[ slotOffset + s ];
+		base[ n ] = rowStride * stride * i;
+		factor[ 4 * n ] = w;
+		if ( stride !== 1 ) {
 
-			for ( let k = 0; k < rowStride; k ++ ) row[ k ] += w * rows[ base + k ];
-			continue;
-
-		}
-
-		const fx = w * ( x - probePositions[ 3 * i ] ) / lengthScale, fy = w * ( y - probePositions[ 3 * i + 1 ] ) / lengthScale;
-		const fz = w * ( z - probePositions[ 3 * i + 2 ] ) / lengthScale;
-		const gx = base + rowStride, gy = gx + rowStride, gz = gy + rowStride;
-		for ( let k = 0; k < rowStride; k ++ ) {
-
-			row[ k ] += w * rows[ base + k ] + fx * rows[ gx + k ] + fy * rows[ gy + k ] + fz * rows[ gz + k ];
+			factor[ 4 * n + 1 ] = w * ( x - probePositions[ 3 * i ] ) / lengthScale;
+			factor[ 4 * n + 2 ] = w * ( y - probePositions[ 3 * i + 1 ] ) / lengthScale;
+			factor[ 4 * n + 3 ] = w * ( z - probePositions[ 3 * i + 2 ] ) / lengthScale;
 
 		}
+
+		n ++;
 
 	}
 
-	// pointIrradianceError, inlined: this runs for every point of every trial.
+	if ( n === 0 ) base[ 0 ] = 0; // no probe blends it: the prediction is 0
+	for ( let s = n; s < 4; s ++ ) {
+
+		base[ s ] = base[ 0 ];
+		factor.fill( 0, 4 * s, 4 * s + 4 );
+
+	}
+
+	const b0 = base[ 0 ], b1 = base[ 1 ], b2 = base[ 2 ], b3 = base[ 3 ];
+	const w0 = factor[ 0 ], w1 = factor[ 4 ], w2 = factor[ 8 ], w3 = factor[ 12 ];
+	const x0 = factor[ 1 ], x1 = factor[ 5 ], x2 = factor[ 9 ], x3 = factor[ 13 ];
+	const y0 = factor[ 2 ], y1 = factor[ 6 ], y2 = factor[ 10 ], y3 = factor[ 14 ];
+	const z0 = factor[ 3 ], z1 = factor[ 7 ], z2 = factor[ 11 ], z3 = factor[ 15 ];
+
+	// The blended row minus the truth, its largest channel summed over the normals (pointIrradianceError, inlined).
 	const truth = context.truth, t = rowStride * j;
 	let sum = 0;
+	if ( stride === 1 ) {
+
+		for ( let k = 0; k < rowStride; k += 3 ) {
+
+			const r = Math.abs( blend1( rows, k, b0, w0, b1, w1, b2, w2, b3, w3 ) - truth[ t + k ] );
+			const g = Math.abs( blend1( rows, k + 1, b0, w0, b1, w1, b2, w2, b3, w3 ) - truth[ t + k + 1 ] );
+			const b = Math.abs( blend1( rows, k + 2, b0, w0, b1, w1, b2, w2, b3, w3 ) - truth[ t + k + 2 ] );
+			sum += r > g ? ( r > b ? r : b ) : ( g > b ? g : b );
+
+		}
+
+		return sum * context.scale;
+
+	}
+
 	for ( let k = 0; k < rowStride; k += 3 ) {
 
-		const r = Math.abs( row[ k ] - truth[ t + k ] ), g = Math.abs( row[ k + 1 ] - truth[ t + k + 1 ] );
-		const b = Math.abs( row[ k + 2 ] - truth[ t + k + 2 ] );
+		let r = 0, g = 0, b = 0;
+		r += blend4( rows, rowStride, k, b0, w0, x0, y0, z0 ); g += blend4( rows, rowStride, k + 1, b0, w0, x0, y0, z0 );
+		b += blend4( rows, rowStride, k + 2, b0, w0, x0, y0, z0 );
+		r += blend4( rows, rowStride, k, b1, w1, x1, y1, z1 ); g += blend4( rows, rowStride, k + 1, b1, w1, x1, y1, z1 );
+		b += blend4( rows, rowStride, k + 2, b1, w1, x1, y1, z1 );
+		r += blend4( rows, rowStride, k, b2, w2, x2, y2, z2 ); g += blend4( rows, rowStride, k + 1, b2, w2, x2, y2, z2 );
+		b += blend4( rows, rowStride, k + 2, b2, w2, x2, y2, z2 );
+		r += blend4( rows, rowStride, k, b3, w3, x3, y3, z3 ); g += blend4( rows, rowStride, k + 1, b3, w3, x3, y3, z3 );
+		b += blend4( rows, rowStride, k + 2, b3, w3, x3, y3, z3 );
+		r = Math.abs( r - truth[ t + k ] ); g = Math.abs( g - truth[ t + k + 1 ] ); b = Math.abs( b - truth[ t + k + 2 ] );
 		sum += r > g ? ( r > b ? r : b ) : ( g > b ? g : b );
 
 	}
 
 	return sum * context.scale;
+
+}
+
+/** Σ over 4 probes of w · row[ k ], in that order from 0 (as the row was accumulated before). */
+function blend1(
+	rows: Float64Array, k: number, b0: number, w0: number, b1: number, w1: number, b2: number, w2: number, b3: number, w3: number,
+): number {
+
+	let v = 0;
+	v += w0 * rows[ b0 + k ];
+	v += w1 * rows[ b1 + k ];
+	v += w2 * rows[ b2 + k ];
+	v += w3 * rows[ b3 + k ];
+	return v;
+
+}
+
+/** One probe's part of row entry k with gradients: w · c + fx · Gx + fy · Gy + fz · Gz, grouped left to right. */
+function blend4( rows: Float64Array, rowStride: number, k: number, base: number, w: number, fx: number, fy: number, fz: number ): number {
+
+	const gx = base + rowStride, gy = gx + rowStride, gz = gy + rowStride;
+	return w * rows[ base + k ] + fx * rows[ gx + k ] + fy * rows[ gy + k ] + fz * rows[ gz + k ];
 
 }
 
