@@ -162,6 +162,35 @@ export const SH_LIMIT = Math.fround( 1e30 ); // 1e30 as float32 stores it, so a 
  */
 export const POSITION_LIMIT = 1e18;
 
+/** The largest finite float32: a larger gradient would be stored as ±Infinity. */
+const FLOAT32_MAX = 3.4028234663852886e38;
+
+/**
+ * The largest |gradient value| (∂SH/∂x, ∂SH/∂y, ∂SH/∂z) probes at `positions` (x, y, z each) may hold: {@link SH_LIMIT}
+ * over the diagonal of their bounding box, so the gradient term across the layout stays within the SH bound (scale-free:
+ * a layout ten times larger takes gradients ten times smaller); the largest float32 when they span no distance. The
+ * runtime and the baked-file codec both check gradients against it, on the values as stored (float32 or float16).
+ */
+export function gradientLimit( positions: ArrayLike<number> ): number {
+
+	let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = - Infinity, maxY = - Infinity, maxZ = - Infinity;
+	for ( let i = 0; i + 2 < positions.length; i += 3 ) {
+
+		const x = positions[ i ], y = positions[ i + 1 ], z = positions[ i + 2 ];
+		if ( x < minX ) minX = x;
+		if ( x > maxX ) maxX = x;
+		if ( y < minY ) minY = y;
+		if ( y > maxY ) maxY = y;
+		if ( z < minZ ) minZ = z;
+		if ( z > maxZ ) maxZ = z;
+
+	}
+
+	const diagonal = Math.hypot( maxX - minX, maxY - minY, maxZ - minZ );
+	return diagonal > 0 ? Math.min( SH_LIMIT / diagonal, FLOAT32_MAX ) : FLOAT32_MAX;
+
+}
+
 /**
  * The index of the first entry that is not a number in [−limit, limit] (NaN, ±Infinity and
  * non-numbers included), or −1 when every entry is.

@@ -1,6 +1,6 @@
 import { TetrahedralizationError, validateTetrahedralization, type ValidTetrahedralization } from '../tetrahedra/validateTetrahedralization.js';
 import { isProbeRole, PROBE_ROLES, type RuleReject, type RuleViolation } from '../roles.js';
-import { POSITION_LIMIT, SH_LIMIT, firstBeyond, isStorableText } from '../validate.js';
+import { POSITION_LIMIT, SH_LIMIT, firstBeyond, gradientLimit, isStorableText } from '../validate.js';
 import { BakedVolumeError, type BakedVolumeErrorCode } from './BakedVolumeError.js';
 import type { BakedCapture, BakedCaptureSettings, BakedFit } from './bakedVolumeTypes.js';
 
@@ -81,23 +81,6 @@ export function checkSH( where: string, name: string, sh: ArrayLike<number> ): v
 	checkFinite( where, name, sh );
 	const i = firstBeyond( sh, SH_LIMIT );
 	if ( i >= 0 ) fail( 'range', where, `${name}[${i}] is ${sh[ i ]}; probe SH values must be within ±${SH_LIMIT.toPrecision( 3 )}.` );
-
-}
-
-/** The largest finite float32. */
-const FLOAT32_MAX = 3.4028234663852886e38;
-
-/**
- * The largest |gradient value| probes at `positions` may hold: SH_LIMIT over the diagonal of their
- * box, so the gradient term across the layout stays within the SH bound (the largest float32 when
- * they span no distance). The runtime's rule (`gradientLimit` in src/runtime/gradientProbes.ts), so
- * that every file the codec accepts loads.
- */
-export function gradientLimit( positions: Float64Array ): number {
-
-	const box = boxOf( positions );
-	const diagonal = Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] );
-	return diagonal > 0 ? Math.min( SH_LIMIT / diagonal, FLOAT32_MAX ) : FLOAT32_MAX;
 
 }
 

@@ -1,25 +1,8 @@
-/* The gradients of gradient probes (81 floats per probe): their bound and the checks of what a volume is given. */
-import { boundsOf } from '../geometry/boundsOf.js';
-import { SH_LIMIT, assertArrayLike, firstBeyond } from '../validate.js';
+/* The gradients of gradient probes (81 floats per probe): the checks of what a volume is given (bound: validate.ts gradientLimit). */
+import { SH_LIMIT, assertArrayLike, firstBeyond, gradientLimit } from '../validate.js';
 
 /** Floats of one probe's gradient: `gradients[ 81·i + 27·a + k ]` = ∂(SH float k)/∂(axis a). */
 export const GRADIENT_FLOATS = 81;
-
-/** The largest finite float32: a larger gradient would be stored as ±Infinity. */
-const FLOAT32_MAX = 3.4028234663852886e38;
-
-/**
- * The largest |gradient value| probes at `positions` may hold: SH_LIMIT divided by the diagonal of their bounding box,
- * so the gradient term across the layout is no larger than an SH value may be (scale-free: a layout ten times larger
- * takes gradients ten times smaller); the largest float32 when the probes span no distance.
- */
-export function gradientLimit( positions: ArrayLike<number> ): number {
-
-	const box = boundsOf( positions );
-	const diagonal = Math.hypot( box[ 3 ] - box[ 0 ], box[ 4 ] - box[ 1 ], box[ 5 ] - box[ 2 ] );
-	return diagonal > 0 ? Math.min( SH_LIMIT / diagonal, FLOAT32_MAX ) : FLOAT32_MAX;
-
-}
 
 /**
  * The index of the first gradient value that is not a finite number within ±{@link gradientLimit}, or −1.
