@@ -179,7 +179,9 @@ function verify( mesh: DynamicTetrahedralization, mirror: Mirror | null, label: 
  * `edits` random edits drawn by `next`, verified after each one. `next` returns the edit to make
  * (possibly rejected as degenerate, which must leave the mesh unchanged).
  */
-function runSequence( mesh: DynamicTetrahedralization, edits: number, next: ( mesh: DynamicTetrahedralization ) => { label: string; apply(): void } ): { rejected: number } {
+function runSequence(
+	mesh: DynamicTetrahedralization, edits: number, next: ( mesh: DynamicTetrahedralization ) => { label: string; apply(): void },
+): { rejected: number } {
 
 	const mirror = new Mirror( mesh );
 	let rejected = 0;
@@ -258,7 +260,9 @@ describe( 'DynamicTetrahedralization: long random edit sequences match tetrahedr
 		for ( const id of activeIds( mesh ) ) {
 
 			const p = mesh.positions;
-			taken.set( key( Math.round( p[ 3 * id ] / spacing ), Math.round( p[ 3 * id + 1 ] / spacing ), Math.round( p[ 3 * id + 2 ] / spacing ) ), id );
+			const cx = Math.round( p[ 3 * id ] / spacing ), cy = Math.round( p[ 3 * id + 1 ] / spacing );
+			const cz = Math.round( p[ 3 * id + 2 ] / spacing );
+			taken.set( key( cx, cy, cz ), id );
 
 		}
 
@@ -266,7 +270,9 @@ describe( 'DynamicTetrahedralization: long random edit sequences match tetrahedr
 
 			for ( ;; ) {
 
-				const s: [ number, number, number ] = [ Math.floor( random() * size ), Math.floor( random() * size ), Math.floor( random() * size ) ];
+				const s: [ number, number, number ] = [
+					Math.floor( random() * size ), Math.floor( random() * size ), Math.floor( random() * size ),
+				];
 				if ( ! taken.has( key( ...s ) ) ) return s;
 
 			}
@@ -278,7 +284,9 @@ describe( 'DynamicTetrahedralization: long random edit sequences match tetrahedr
 			const ids = activeIds( m );
 			const pick = ids[ Math.floor( random() * ids.length ) ];
 			const p = m.positions;
-			const site = ( id: number ) => key( Math.round( p[ 3 * id ] / spacing ), Math.round( p[ 3 * id + 1 ] / spacing ), Math.round( p[ 3 * id + 2 ] / spacing ) );
+			const site = ( id: number ) => key(
+				Math.round( p[ 3 * id ] / spacing ), Math.round( p[ 3 * id + 1 ] / spacing ), Math.round( p[ 3 * id + 2 ] / spacing ),
+			);
 			const r = random();
 			if ( r < 0.35 ) return { label: `remove ${pick}`, apply: () => { const s = site( pick ); m.remove( pick ); taken.delete( s ); } };
 			const [ i, j, k ] = freeSite();
@@ -384,7 +392,13 @@ describe( 'DynamicTetrahedralization: ids, errors and degenerate edits', () => {
 		expect( mesh.insert( 0.25, 0.5, 0.5 ) ).toBe( 21 );
 		mesh.move( 7, 0.1, 0.2, 0.3 );
 		expect( Array.from( mesh.positions.subarray( 21, 24 ) ) ).toEqual( [ 0.1, 0.2, 0.3 ] );
-		for ( const i of [ 0, 1, 2, 4, 19 ] ) expect( Array.from( mesh.positions.subarray( 3 * i, 3 * i + 3 ) ) ).toEqual( Array.from( points.subarray( 3 * i, 3 * i + 3 ) ) );
+		for ( const i of [ 0, 1, 2, 4, 19 ] ) {
+
+			const given = Array.from( points.subarray( 3 * i, 3 * i + 3 ) );
+			expect( Array.from( mesh.positions.subarray( 3 * i, 3 * i + 3 ) ) ).toEqual( given );
+
+		}
+
 		expect( Array.from( mesh.tetrahedra ) ).not.toContain( 3 );
 		verify( mesh, null, 'after id edits' );
 
@@ -538,7 +552,8 @@ describe( 'DynamicTetrahedralization: locality', () => {
 			const i = Math.floor( random() * 5000 );
 			const p = mesh.positions;
 			if ( e % 3 === 0 ) mesh.move( i, random(), random(), random() ); // a jump across the layout
-			else mesh.move( i, p[ 3 * i ] + ( random() - 0.5 ) * 0.02, p[ 3 * i + 1 ] + ( random() - 0.5 ) * 0.02, p[ 3 * i + 2 ] + ( random() - 0.5 ) * 0.02 );
+			else mesh.move( i, p[ 3 * i ] + ( random() - 0.5 ) * 0.02, p[ 3 * i + 1 ] + ( random() - 0.5 ) * 0.02,
+				p[ 3 * i + 2 ] + ( random() - 0.5 ) * 0.02 );
 			const touched = mesh.lastEdit.removedCellCount + mesh.lastEdit.createdCellCount;
 			expect( mesh.lastEdit.rebuilt ).toBe( false );
 			expect( mesh.lastEdit.changedCells.length ).toBeLessThanOrEqual( touched );
