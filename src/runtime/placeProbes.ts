@@ -1,8 +1,11 @@
 import type { Box3, Object3D, Scene, WebGLRenderer } from 'three';
 import { assertRenderer, assertScene, checkCaptureCall } from '../capture/captureSettings.js';
 import { readPointList, type PointList } from '../placement/readPointList.js';
-import { reduceProbes, type ReduceProbesResult } from '../placement/reduceProbes.js';
-import { assertInteger, assertNumber, assertOptionalNumber, assertOptions, describeValue } from '../validate.js';
+import type { FitSamples } from '../fitting/fitProbeSH.js';
+import { readReduceOptions } from '../placement/reduceOptions.js';
+import { reduceProbes, type ReduceProbesOptions, type ReduceProbesResult } from '../placement/reduceProbes.js';
+import type { RegionOfInterest } from '../placement/regionOfInterest.js';
+import { SH_FLOATS, assertInteger, assertNumber, assertOptionalNumber, assertOptions, describeValue } from '../validate.js';
 import { LightProbeVolume } from './LightProbeVolume.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import { describeCandidates, placeCandidates } from './probeCandidates.js';
@@ -53,6 +56,27 @@ export interface PlaceProbesOptions {
 	/** Other options of the candidates' capture (`LightProbeVolume.capture`), e.g. `{ nonNegative: true }`. */
 	capture?: Omit<LightProbeVolumeCaptureOptions, 'resolution' | 'indices'>;
 
+	/**
+	 * Re-fit the probes' SH to the candidates at every step of the reduction (`reduceProbes`' `fit`): `true`, or
+	 * `{ gradients, lambda, gradientLambda, nonNegative }`. The result's `reduction.sh` (and `gradients`) are then fitted.
+	 */
+	fit?: ReduceProbesOptions[ 'fit' ];
+
+	/** Swap passes after the insertions (`reduceProbes`' `swaps`; only with `fit`, default 2 passes with it). */
+	swaps?: boolean | number;
+
+	/** Where the light matters most (`reduceProbes`' `region`, e.g. where characters go): weights the choice and the error. */
+	region?: RegionOfInterest;
+
+	/**
+	 * How much each candidate's error counts (`reduceProbes`' `weights`, ≥ 0): a function of the candidate's position
+	 * (the candidates are found inside this call), or one weight per candidate (as many as this call finds).
+	 */
+	weights?: ArrayLike<number> | ( ( x: number, y: number, z: number ) => number );
+
+	/** Extra captured points the reduction's error (and fit) also uses (`reduceProbes`' `fitSamples`). */
+	fitSamples?: FitSamples;
+
 }
 
 /** Result of {@link placeProbes}. */
@@ -67,7 +91,11 @@ export interface PlaceProbesResult {
 	/** Their captured SH, 27 floats each, at `candidateResolution`. */
 	candidateSH: Float32Array;
 
-	/** The reduction (`reduceProbes`): `keep` indexes `candidates`; `error` is the layout's irradiance error over them. */
+	/**
+	 * The reduction (`reduceProbes`): `keep` indexes `candidates`; `error` is the layout's irradiance error over them.
+	 * With `fit`, its `sh` and `gradients` are fitted to the candidates' capture at `candidateResolution`: a volume made
+	 * from `positions` and captured again (at another resolution) must be fitted again — capture option `fit`.
+	 */
 	reduction: ReduceProbesResult;
 
 	/** Candidates dropped before the capture, per reason. */
@@ -80,7 +108,8 @@ export interface PlaceProbesResult {
  * and at its mesh vertices (moved off their surfaces), those in open space kept (`classifyPoints`:
  * at least `clearance` from every surface, not inside a solid, reachable from `reachableFrom`), all captured at low
  * resolution, then reduced to `count` probes whose tetrahedral interpolation best reproduces the
- * candidates' irradiance (`reduceProbes`). Capture the result at full resolution:
+ * candidates' irradiance (`reduceProbes`; with `fit`, `swaps`, `region`, `weights` and `fitSamples` passed to it).
+ * Capture the result at full resolution (with `fit`, fitting again: the fitted SH are the candidates' resolution's):
  *
  * ```js
  * const { positions } = await placeProbes( renderer, scene, { count: 32, reachableFrom: [ spawn ] } );
@@ -126,6 +155,8 @@ export async function placeProbes( renderer: WebGLRenderer, scene: Scene, option
 
 	}
 
+	const reduceOptions = reductionOptions( where, candidates, options );
+
 	const dense = new LightProbeVolume( { positions: candidates } );
 	try {
 
@@ -142,8 +173,45 @@ export async function placeProbes( renderer: WebGLRenderer, scene: Scene, option
 	}
 
 	const candidateSH = dense.sh.slice();
-	const reduction = reduceProbes( candidates, candidateSH, { targetCount: options.count, strategy: 'mean' } );
+	const reduction = reduceProbes( candidates, candidateSH, reduceOptions );
 	return { positions: reduction.positions, candidates, candidateSH, reduction, rejected };
+
+}
+
+/**
+ * The options of the reduction, checked before the capture (errors name `placeProbes` and the option): `count`
+ * probes by the 'mean' strategy, with the fit, swaps, region, weights (a function evaluated at each candidate) and
+ * fit samples given.
+ */
+function reductionOptions( where: string, candidates: Float64Array, options: PlaceProbesOptions ): ReduceProbesOptions {
+
+	const { fit, swaps, region, fitSamples } = options;
+	const count = candidates.length / 3;
+	let weights = options.weights;
+	if ( typeof weights === 'function' ) {
+
+		const weigh = weights;
+		weights = Float64Array.from( { length: count }, ( _, i ) => {
+
+			const [ x, y, z ] = candidates.subarray( 3 * i, 3 * i + 3 );
+			const weight = weigh( x, y, z );
+			if ( typeof weight !== 'number' || ! ( weight >= 0 && weight < Infinity ) ) {
+
+				throw new RangeError( `${where}: options.weights returned ${describeValue( weight )} at candidate ${i} (${x}, ${y}, ${z}); `
+					+ 'weights must be finite numbers ≥ 0.' );
+
+			}
+
+			return weight;
+
+		} );
+
+	}
+
+	const reduce: ReduceProbesOptions = { targetCount: options.count, strategy: 'mean', fit, swaps, region, weights, fitSamples };
+	// The SH are not captured yet: zeros stand in, as the checks read only their length.
+	readReduceOptions( where, candidates, new Float32Array( SH_FLOATS * count ), count, reduce );
+	return reduce;
 
 }
 

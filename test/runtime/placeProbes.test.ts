@@ -37,6 +37,24 @@ describe( 'placeProbes (checks before the capture)', () => {
 
 	} );
 
+	it( 'checks the reduction\'s options (fit, swaps, region, weights, fitSamples) before the capture, naming placeProbes', async () => {
+
+		// The stand-in renderer cannot capture: each of these errors comes before the capture would start.
+		const call = ( options: object ) => placeProbes( renderer, scene, { count: 8, reachableFrom: [ 0, 1.6, 0 ], ...options } );
+		await expect( call( { fit: { gradient: true } } ) ).rejects.toThrow( /^placeProbes: options.fit has unknown option "gradient"/ );
+		await expect( call( { fit: { lambda: - 1 } } ) ).rejects.toThrow( /^placeProbes: options.fit.lambda must be 'auto' or a finite number ≥ 0/ );
+		await expect( call( { swaps: 2 } ) ).rejects.toThrow( /^placeProbes: options.swaps needs options.fit/ );
+		await expect( call( { weights: [ 1, 2, 3 ] } ) ).rejects.toThrow( /^placeProbes: options.weights must have one weight per point \(\d+\), got length 3/ );
+		await expect( call( { weights: () => Number.NaN } ) ).rejects.toThrow( /^placeProbes: options.weights returned NaN at candidate 0 \(/ );
+		await expect( call( { weights: ( x: number ) => ( x < 0 ? - 1 : 1 ) } ) ).rejects.toThrow( /^placeProbes: options.weights returned -1 at candidate \d+/ );
+		await expect( call( { weights: () => 0 } ) ).rejects.toThrow( /^placeProbes: every point has weight 0/ );
+		await expect( call( { region: { boxes: 5 } } ) ).rejects.toThrow( /^placeProbes: options.region/ );
+		await expect( call( { fitSamples: { positions: [ 0, 1, 0 ], sh: [ 1 ] } } ) ).rejects.toThrow( /^placeProbes: options.fitSamples.sh/ );
+		// Valid options get as far as the capture, which the stand-in renderer cannot do.
+		await expect( call( { fit: true, weights: () => 1 } ) ).rejects.not.toThrow( /options\.(fit|weights)/ );
+
+	} );
+
 	it( 'says how many candidates were found and why the others were dropped when there are fewer than count', async () => {
 
 		// The Cornell box (2 × 2 × 2) at 0.5 spacing: 4 × 4 × 4 grid points and the walls' corners,
