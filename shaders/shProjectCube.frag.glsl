@@ -6,12 +6,25 @@
 // and t (E even, P odd in s, Q odd in t, R odd in both), since each Y_k is even or odd in each, so
 // 24 texels cost nine multiply-adds instead of 24 × 9 (docs/gpu-projection.md derives the terms).
 // The output is a tiles × tiles grid per probe, one row block per probe, in seven float planes
-// (shPack); shReduce and shGather sum each grid to one texel.
+// (shPack); shReduce and shGather sum each grid to one texel. With SOURCES > 1 one draw projects up
+// to that many cube maps, one row block each, which saves a render pass and a texture barrier per
+// probe where the faces are small.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
 
-uniform samplerCube cubeMap; // NEAREST filtering: every lookup below hits one texel centre exactly
+// NEAREST filtering: every lookup below hits one texel centre exactly.
+uniform samplerCube cubeMap0;
+#if SOURCES > 1
+uniform samplerCube cubeMap1;
+uniform samplerCube cubeMap2;
+uniform samplerCube cubeMap3;
+uniform samplerCube cubeMap4;
+uniform samplerCube cubeMap5;
+uniform samplerCube cubeMap6;
+uniform samplerCube cubeMap7;
+uniform int tiles;
+#endif
 // ceil(size / 2)² texel solid angles of one face quadrant, the same on every face and mirror image;
 // halved on an odd size's middle row and column, whose mirror images are the texel itself.
 uniform sampler2D solidAngles;
@@ -25,7 +38,7 @@ uniform int rowOffset;
 // OpenGL ES 3.0 cube map face selection (section 3.8.10), so texture() lands on those very texels
 // (face 0: +X at (1, −t, −s), 1: −X at (−1, −t, s), 2: +Y at (s, 1, t), 3: −Y at (s, −1, −t),
 // 4: +Z at (s, −t, 1), 5: −Z at (−s, −t, −1)). Returns their parity sums.
-void faceSums( const in int face, const in float s, const in float t, out vec3 E, out vec3 P, out vec3 Q, out vec3 R ) {
+void faceSums( samplerCube cubeMap, const in int face, const in float s, const in float t, out vec3 E, out vec3 P, out vec3 Q, out vec3 R ) {
 
 	vec3 pp, pm, mp, mm; // radiance at ( s, t ), ( s, −t ), ( −s, t ), ( −s, −t )
 	if ( face == 0 ) {
@@ -68,9 +81,9 @@ void faceSums( const in int face, const in float s, const in float t, out vec3 E
 
 }
 
-void main() {
+// Integrates the tile's block of positions of `cubeMap` and writes the sums.
+void project( samplerCube cubeMap, const in ivec2 tile ) {
 
-	ivec2 tile = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
 	int quadrant = ( size + 1 ) / 2;
 	int x0 = tile.x * block;
 	int y0 = tile.y * block;
@@ -92,12 +105,12 @@ void main() {
 			// The unit direction of ( s, t ) on face 0 is ( A, −T, −S ) (up to signs and order on the others).
 			float A = inversesqrt( 1.0 + s * s + t * t ), S = s * A, T = t * A;
 			vec3 E0, P0, Q0, R0, E1, P1, Q1, R1, E2, P2, Q2, R2, E3, P3, Q3, R3, E4, P4, Q4, R4, E5, P5, Q5, R5;
-			faceSums( 0, s, t, E0, P0, Q0, R0 );
-			faceSums( 1, s, t, E1, P1, Q1, R1 );
-			faceSums( 2, s, t, E2, P2, Q2, R2 );
-			faceSums( 3, s, t, E3, P3, Q3, R3 );
-			faceSums( 4, s, t, E4, P4, Q4, R4 );
-			faceSums( 5, s, t, E5, P5, Q5, R5 );
+			faceSums( cubeMap, 0, s, t, E0, P0, Q0, R0 );
+			faceSums( cubeMap, 1, s, t, E1, P1, Q1, R1 );
+			faceSums( cubeMap, 2, s, t, E2, P2, Q2, R2 );
+			faceSums( cubeMap, 3, s, t, E3, P3, Q3, R3 );
+			faceSums( cubeMap, 4, s, t, E4, P4, Q4, R4 );
+			faceSums( cubeMap, 5, s, t, E5, P5, Q5, R5 );
 			float AS = A * S, AT = A * T, ST = S * T;
 			vec3 xFaces = E0 + E1, yFaces = E2 + E3, zFaces = E4 + E5;
 			// Y_k without its constant (applied once at the end), summed over the 24 texels.
@@ -118,5 +131,25 @@ void main() {
 	// three.js SphericalHarmonics3 basis constants (getBasisAt).
 	writeSums( c0 * 0.282095, c1 * 0.488603, c2 * 0.488603, c3 * 0.488603, c4 * 1.092548,
 		c5 * 1.092548, c6 * 0.315392, c7 * 1.092548, c8 * 0.546274 );
+
+}
+
+void main() {
+
+	ivec2 tile = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
+	#if SOURCES > 1
+	// Samplers can only be indexed by constants in GLSL ES 3.00, hence the chain. tiles is even
+	// (but for 1² and 2² faces), so a 2 × 2 fragment quad never spans two sources.
+	int source = tile.y / tiles;
+	tile.y -= source * tiles;
+	if ( source == 1 ) { project( cubeMap1, tile ); return; }
+	if ( source == 2 ) { project( cubeMap2, tile ); return; }
+	if ( source == 3 ) { project( cubeMap3, tile ); return; }
+	if ( source == 4 ) { project( cubeMap4, tile ); return; }
+	if ( source == 5 ) { project( cubeMap5, tile ); return; }
+	if ( source == 6 ) { project( cubeMap6, tile ); return; }
+	if ( source == 7 ) { project( cubeMap7, tile ); return; }
+	#endif
+	project( cubeMap0, tile );
 
 }

@@ -1,6 +1,6 @@
 import {
-	CubeCamera, NearestFilter, WebGLCubeRenderTarget,
-	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
+	CubeCamera, FloatType, NearestFilter, WebGLCubeRenderTarget,
+	type CubeTexture, type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
@@ -48,10 +48,15 @@ export interface ProbeCaptureOptions {
 
 }
 
+// GPU memory the cube targets of a group may take together (bytes): small faces get groups of up to
+// SHProjector.maxCubesPerDraw probes projected in one draw, large ones, whose projection dwarfs the
+// cost of a draw, fewer.
+const GROUP_BYTES = 1 << 20;
+
 /**
- * Renders cube maps of a scene at probe positions and projects them to SH9 on the GPU. One cube
- * render target serves every probe; probes are projected in batches, each ending in one small
- * read-back (27 floats per probe).
+ * Renders cube maps of a scene at probe positions and projects them to SH9 on the GPU. Probes are
+ * rendered in groups of a few cube render targets, each group projected in one draw, and
+ * projected in batches, each ending in one small read-back (27 floats per probe).
  *
  * ```js
  * const capturer = new ProbeCapturer( renderer, { resolution: 64 } );
@@ -67,10 +72,13 @@ export class ProbeCapturer {
 	/** Cube face edge in texels. */
 	readonly resolution: number;
 
-	/** The cube render target every probe is rendered into. */
+	/**
+	 * The cube render target of the first probe of each group (so of a single probe's capture);
+	 * the other probes of a group go to targets of the same kind that the capturer keeps.
+	 */
 	readonly cubeRenderTarget: WebGLCubeRenderTarget;
 
-	/** The cube camera; its position is set to each probe in turn. */
+	/** The cube camera; its position is set to each probe in turn (its render target too, within a group). */
 	readonly cubeCamera: CubeCamera;
 
 	/** The GPU projection. */
@@ -78,6 +86,11 @@ export class ProbeCapturer {
 
 	private readonly solidAngle: CubeSolidAngleMode;
 	private readonly shadowMaps: ShadowMapFreeze;
+	// cubeRenderTarget and the group's other targets, their textures, created when first needed.
+	private readonly groupTargets: WebGLCubeRenderTarget[];
+	private readonly groupTextures: CubeTexture[];
+	private readonly groupSize: number;
+	private readonly type: TextureDataType;
 	private busy = false;
 
 	/**
@@ -92,9 +105,12 @@ export class ProbeCapturer {
 		this.renderer = renderer;
 		this.resolution = resolution;
 		this.solidAngle = solidAngle;
-		this.cubeRenderTarget = new WebGLCubeRenderTarget( resolution, {
-			type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
-		} );
+		this.type = type;
+		this.cubeRenderTarget = this.createTarget();
+		this.groupTargets = [ this.cubeRenderTarget ];
+		this.groupTextures = [ this.cubeRenderTarget.texture ];
+		const bytes = 6 * resolution * resolution * ( type === FloatType ? 16 : 8 );
+		this.groupSize = Math.max( 1, Math.min( SHProjector.maxCubesPerDraw, Math.floor( GROUP_BYTES / bytes ) ) );
 		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
 		this.projector = new SHProjector( renderer );
 		this.shadowMaps = new ShadowMapFreeze( renderer );
@@ -149,6 +165,15 @@ export class ProbeCapturer {
 			hidden = this.hide( scene, options );
 
 			scene.updateMatrixWorld();
+			const group = Math.min( this.groupSize, count );
+			while ( this.groupTargets.length < group ) {
+
+				const extra = this.createTarget();
+				this.groupTargets.push( extra );
+				this.groupTextures.push( extra.texture );
+
+			}
+
 			for ( let start = 0; start < count; start += batch ) {
 
 				const size = Math.min( batch, count - start );
@@ -156,11 +181,15 @@ export class ProbeCapturer {
 				for ( let i = start; i < start + size; i ++ ) {
 
 					this.checkContext();
+					// Probe i goes to slot k of its group; the group is projected in one draw once full.
+					const k = ( i - start ) % group;
+					cubeCamera.renderTarget = this.groupTargets[ k ];
 					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
 					cubeCamera.updateMatrixWorld();
 					renderer.autoClear = true; // every face must start cleared
 					cubeCamera.update( renderer, scene );
-					projector.add( this.cubeRenderTarget.texture );
+					if ( k === group - 1 ) projector.add( group === 1 ? this.groupTextures[ 0 ] : this.groupTextures.slice( 0, group ) );
+					else if ( i === start + size - 1 ) projector.add( this.groupTextures.slice( 0, k + 1 ) );
 					options.onProgress?.( i + 1, count );
 
 					// Give a page a frame now and then to paint its progress bar, with the hidden
@@ -187,6 +216,7 @@ export class ProbeCapturer {
 		} finally {
 
 			shadowMaps.end();
+			cubeCamera.renderTarget = this.cubeRenderTarget;
 			renderer.autoClear = autoClear;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
 			show( hidden );
@@ -240,11 +270,19 @@ export class ProbeCapturer {
 
 	}
 
-	/** Frees the cube render target and the projection's targets and materials. */
+	/** Frees the cube render targets and the projection's targets and materials. */
 	dispose(): void {
 
-		this.cubeRenderTarget.dispose();
+		for ( const target of this.groupTargets ) target.dispose();
 		this.projector.dispose();
+
+	}
+
+	private createTarget(): WebGLCubeRenderTarget {
+
+		return new WebGLCubeRenderTarget( this.resolution, {
+			type: this.type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+		} );
 
 	}
 

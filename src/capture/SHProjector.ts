@@ -18,6 +18,10 @@ const PLANES = 7;
 // The gather pass sums up to this many tiles per axis itself; larger grids are reduced by 4 first.
 const GATHER_TILES = 4;
 
+// Cube maps one draw can project (shProjectCube's SOURCES), beside the solid-angle texture: well
+// within the 16 texture units WebGL2 guarantees.
+const MAX_CUBES_PER_DRAW = 8;
+
 /**
  * Tiles per axis of a probe's grid of partial sums over a domain of `texels` per axis (a cube face
  * quadrant; half a panorama's shorter side, so that a panorama of width `size` never needs more
@@ -93,8 +97,10 @@ export class SHProjector {
 	private readonly quad: Mesh;
 	// The planes each draw writes: one group of seven with enough draw buffers.
 	private readonly groups: PlaneGroup[] = [];
-	// One material per plane group; the materials of a pass share one uniforms object.
+	// One material per plane group; the materials of a pass share one uniforms object. The batch
+	// variant projects up to MAX_CUBES_PER_DRAW cube maps per draw.
 	private readonly cubeMaterials: RawShaderMaterial[];
+	private readonly cubeBatchMaterials: RawShaderMaterial[];
 	private readonly equirectMaterials: RawShaderMaterial[];
 	private readonly reduceMaterials: RawShaderMaterial[];
 	private readonly gatherMaterial: RawShaderMaterial;
@@ -128,13 +134,14 @@ export class SHProjector {
 		for ( let first = 0; first < PLANES; first += perDraw ) this.groups.push( { first, count: Math.min( perDraw, PLANES - first ) } );
 
 		type Uniforms = Record<string, { value: unknown }>;
-		const material = ( fragmentShader: string, uniforms: Uniforms, group: PlaneGroup ) => new RawShaderMaterial( {
+		const material = ( fragmentShader: string, uniforms: Uniforms, group: PlaneGroup, sources = 1 ) => new RawShaderMaterial( {
 			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, depthTest: false, depthWrite: false,
-			defines: { PLANE_FIRST: group.first, PLANE_COUNT: group.count },
+			defines: { PLANE_FIRST: group.first, PLANE_COUNT: group.count, SOURCES: sources },
 		} );
-		const cube = {
-			cubeMap: { value: null }, solidAngles: { value: null }, size: { value: 0 }, block: { value: 1 }, rowOffset: { value: 0 },
+		const cube: Uniforms = {
+			solidAngles: { value: null }, size: { value: 0 }, block: { value: 1 }, rowOffset: { value: 0 }, tiles: { value: 1 },
 		};
+		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) cube[ `cubeMap${i}` ] = { value: null };
 		const equirect = { panorama: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 } };
 		const reduce: Uniforms = { factor: { value: 4 } };
 		const gather: Uniforms = { factor: { value: 1 } };
@@ -146,6 +153,7 @@ export class SHProjector {
 		}
 
 		this.cubeMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group ) );
+		this.cubeBatchMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, MAX_CUBES_PER_DRAW ) );
 		this.equirectMaterials = this.groups.map( ( group ) => material( shProjectEquirectFrag, equirect, group ) );
 		this.reduceMaterials = this.groups.map( ( group ) => material( shReduceFrag, reduce, group ) );
 		this.gatherMaterial = material( shGatherFrag, gather, { first: 0, count: 1 } );
@@ -154,6 +162,9 @@ export class SHProjector {
 		this.scene.add( this.quad );
 
 	}
+
+	/** Most cube maps one {@link SHProjector.add} call projects in one draw. */
+	static readonly maxCubesPerDraw: number = MAX_CUBES_PER_DRAW;
 
 	/** Most sources one batch can hold for a source of this size (texels per axis). */
 	static batchCapacity( size: number ): number {
@@ -263,6 +274,7 @@ export class SHProjector {
 			const u = this.cubeMaterials[ 0 ].uniforms;
 			u.solidAngles.value = this.solidAngleTexture( size, solidAngle );
 			u.size.value = size;
+			u.tiles.value = tiles;
 			u.block.value = Math.ceil( Math.ceil( size / 2 ) / tiles );
 
 		} else {
@@ -276,37 +288,97 @@ export class SHProjector {
 	}
 
 	/**
-	 * Projects the next source of the batch. A cube texture must be the texture of a
+	 * Projects the next source of the batch, or the next few cube maps in one draw (an array of up
+	 * to {@link SHProjector.maxCubesPerDraw}, in order; for small faces this saves a draw, a
+	 * render pass and a texture barrier per probe). A cube texture must be the texture of a
 	 * `WebGLCubeRenderTarget` with `NearestFilter` (as {@link ProbeCapturer} makes it), so every
 	 * texel-centre lookup returns that texel; a panorama is any 2D texture, sampled texel by texel.
-	 * The draws are issued at once: the texture may be rendered into again right after.
+	 * The draws are issued at once: the textures may be rendered into again right after.
 	 */
-	add( texture: CubeTexture | Texture ): void {
+	add( texture: CubeTexture | Texture | readonly CubeTexture[] ): void {
 
 		if ( this.source === null ) throw new Error( 'SHProjector.add: call begin() first.' );
-		if ( this.count >= this.capacity ) throw new Error( `SHProjector.add: the batch holds ${this.capacity} sources; call finish() first.` );
-		const kind = texture as { isTexture?: boolean; isCubeTexture?: boolean } | null;
-		if ( kind?.isTexture !== true || ( kind.isCubeTexture === true ) !== ( this.source === 'cube' ) ) {
+		const many = Array.isArray( texture );
+		const count = many ? ( texture as readonly CubeTexture[] ).length : 1;
+		if ( many && ( this.source !== 'cube' || count < 1 || count > MAX_CUBES_PER_DRAW ) ) {
 
-			throw new TypeError( `SHProjector.add: texture must be a three.js ${this.source === 'cube' ? 'CubeTexture (a WebGLCubeRenderTarget\'s)' : '2D Texture'} `
-				+ `for a '${this.source}' batch, got ${describeValue( texture )}.` );
+			throw new RangeError( `SHProjector.add: an array of textures must hold 1..${MAX_CUBES_PER_DRAW} cube textures for a 'cube' batch, `
+				+ `got ${count} for a '${this.source}' batch.` );
 
 		}
 
-		const materials = this.source === 'cube' ? this.cubeMaterials : this.equirectMaterials;
-		const uniforms = materials[ 0 ].uniforms;
-		uniforms[ this.source === 'cube' ? 'cubeMap' : 'panorama' ].value = texture;
-		uniforms.rowOffset.value = this.count * this.tiles;
+		if ( this.count + count > this.capacity ) {
+
+			throw new Error( `SHProjector.add: the batch holds ${this.capacity} sources, ${this.count} added; call finish() first.` );
+
+		}
+
+		for ( let i = 0; i < count; i ++ ) {
+
+			const item = many ? ( texture as readonly CubeTexture[] )[ i ] : texture;
+			const kind = item as { isTexture?: boolean; isCubeTexture?: boolean } | null;
+			if ( kind?.isTexture !== true || ( kind.isCubeTexture === true ) !== ( this.source === 'cube' ) ) {
+
+				throw new TypeError( `SHProjector.add: ${many ? `textures[ ${i} ]` : 'texture'} must be a three.js `
+					+ `${this.source === 'cube' ? 'CubeTexture (a WebGLCubeRenderTarget\'s)' : '2D Texture'} for a '${this.source}' batch, got ${describeValue( item )}.` );
+
+			}
+
+		}
+
+		if ( this.source === 'equirect' ) {
+
+			this.equirectMaterials[ 0 ].uniforms.panorama.value = texture;
+			this.drawSources( this.equirectMaterials, 1 );
+
+		} else if ( ! many ) {
+
+			this.setCubes( texture as CubeTexture, 1 );
+			this.drawSources( this.cubeMaterials, 1 );
+
+		} else if ( this.groups.length > 1 ) {
+
+			// Several draws per source anyway (few draw buffers): one source per draw, which spares
+			// compiling a program of eight projections per plane group.
+			for ( const cube of texture as readonly CubeTexture[] ) {
+
+				this.setCubes( cube, 1 );
+				this.drawSources( this.cubeMaterials, 1 );
+
+			}
+
+		} else {
+
+			this.setCubes( texture as readonly CubeTexture[], count );
+			this.drawSources( count > 1 ? this.cubeBatchMaterials : this.cubeMaterials, count );
+
+		}
+
+	}
+
+	/** Binds `count` cube maps to the sampler slots; unused slots hold null (three binds an empty cube map), not a stale texture. */
+	private setCubes( cubes: CubeTexture | readonly CubeTexture[], count: number ): void {
+
+		const uniforms = this.cubeMaterials[ 0 ].uniforms;
+		const list = Array.isArray( cubes ) ? cubes as readonly CubeTexture[] : null;
+		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) uniforms[ `cubeMap${i}` ].value = i >= count ? null : list ? list[ i ] : cubes;
+
+	}
+
+	/** Projects the next `count` sources, whose textures are bound, into their row blocks: one draw per plane group. */
+	private drawSources( materials: RawShaderMaterial[], count: number ): void {
+
+		materials[ 0 ].uniforms.rowOffset.value = this.count * this.tiles;
 		for ( let g = 0; g < this.groups.length; g ++ ) {
 
 			this.quad.material = materials[ g ];
 			const target = this.levels[ 0 ][ g ];
-			target.viewport.set( 0, this.count * this.tiles, this.tiles, this.tiles );
+			target.viewport.set( 0, this.count * this.tiles, this.tiles, count * this.tiles );
 			this.draw( target );
 
 		}
 
-		this.count ++;
+		this.count += count;
 
 	}
 
@@ -467,7 +539,9 @@ export class SHProjector {
 		this.disposeTargets();
 		for ( const texture of this.solidAngleTextures.values() ) texture.dispose();
 		this.solidAngleTextures.clear();
-		const materials = [ ...this.cubeMaterials, ...this.equirectMaterials, ...this.reduceMaterials, this.gatherMaterial ];
+		const materials = [
+			...this.cubeMaterials, ...this.cubeBatchMaterials, ...this.equirectMaterials, ...this.reduceMaterials, this.gatherMaterial,
+		];
 		for ( const material of materials ) material.dispose();
 		this.quad.geometry.dispose();
 

@@ -258,15 +258,19 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 
 	} );
 
-	it( 'SHProjector used directly: two batches of different sizes and counts on one projector keep probes apart', () => {
+	it( 'SHProjector used directly: batches of different sizes and counts on one projector keep probes apart, added one by one and in arrays of up to 8 per draw', () => {
 
-		// begin/add/finish twice on one projector (targets reused or rebuilt in between), each
-		// source a cube map of constant colour (i + 1, 2(i + 1), 0.5): L00 = 4π·Y00·colour.
+		// begin/add/finish three times on one projector (targets reused or rebuilt in between), each
+		// source a cube map of constant colour (i + 1, 2(i + 1), 0.5): L00 = 4π·Y00·colour. The
+		// sources go in as single textures and as arrays of 1..8 (one draw each), in chunks whose
+		// sizes do not divide the batch, so a wrong row offset or sampler slot gives a probe its
+		// neighbour's colour.
 		const projector = new SHProjector( renderer );
 		const unit = 4 * Math.PI * 0.282095;
 		const scene = new THREE.Scene();
 		const results: Float32Array[] = [];
-		for ( const [ size, count ] of [ [ 64, 5 ], [ 16, 40 ], [ 64, 3 ] ] ) {
+		const chunks = [ 1, 3, 8, 0, 2, 5, 8, 7 ]; // 0: one single texture, not an array
+		for ( const [ size, count ] of [ [ 64, 5 ], [ 16, 40 ], [ 7, 23 ] ] ) {
 
 			projector.begin( 'cube', size, count );
 			const cubes: THREE.WebGLCubeRenderTarget[] = [];
@@ -278,7 +282,14 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 				scene.background = new THREE.Color( i + 1, 2 * ( i + 1 ), 0.5 );
 				new THREE.CubeCamera( 0.1, 10, cube ).update( renderer, scene );
 				cubes.push( cube );
-				projector.add( cube.texture );
+
+			}
+
+			for ( let i = 0, c = 0; i < count; c ++ ) {
+
+				const chunk = Math.min( chunks[ c % chunks.length ], count - i );
+				if ( chunk === 0 ) projector.add( cubes[ i ++ ].texture );
+				else { projector.add( cubes.slice( i, i + chunk ).map( ( cube ) => cube.texture ) ); i += chunk; }
 
 			}
 

@@ -103,6 +103,10 @@ describe.skipIf( ! ctx.renderer )( `capture classes: misuse${ctx.skipReason ? ' 
 		projector.add( cube.texture );
 		where( 'finish', () => projector.finish( 'x' as never ), /target must be a Float32Array/ );
 		where( 'finish', () => projector.finish( new Float32Array( 27 ), - 3 ), /offset must be an integer ≥ 0/ );
+		where( 'add', () => projector.add( [ cube.texture, cube.texture ] ), /the batch holds 2 sources, 1 added/ );
+		where( 'add', () => projector.add( [] ), /an array of textures must hold 1\.\.8 cube textures/ );
+		where( 'add', () => projector.add( new Array( 9 ).fill( cube.texture ) ), /must hold 1\.\.8 cube textures for a 'cube' batch, got 9/ );
+		where( 'add', () => projector.add( [ new THREE.Texture() as never ] ), /textures\[ 0 \] must be a three\.js CubeTexture/ );
 		projector.add( cube.texture ); // the batch still has its second slot
 		const out = projector.finish( new Float32Array( 54 ) );
 		expect( out.every( Number.isFinite ) ).toBe( true );
