@@ -87,7 +87,10 @@ export class LightProbeVolume {
 	 */
 	gradients: Float32Array | null;
 
-	/** How the SH (and gradients) were fitted to extra captured points, stored in baked files; null when not fitted. */
+	/**
+	 * How the SH (and gradients) were fitted to extra captured points, stored in baked files; null when not fitted. A
+	 * volume loaded with a record (`fromBakedData`) has no fit points to refit to: a capture of some of its probes sets it to null.
+	 */
 	fitSettings: BakedFit | null = null;
 
 	/** Name per probe ('' when none was given); `addProbe` appends. */
@@ -258,7 +261,8 @@ export class LightProbeVolume {
 	/**
 	 * Captures only the dirty probes (moved or added since their last capture; see
 	 * {@link LightProbeVolume.dirtyProbes}) and, for a fitted volume, refits the edited layout to the
-	 * stored fit points; does nothing when there is neither. Same options as
+	 * stored fit points; does nothing when there is neither. A volume loaded from a file keeps no fit points:
+	 * its recaptured probes get captured SH and zero gradients, and `fitSettings` becomes null. Same options as
 	 * {@link LightProbeVolume.capture}, without `indices`.
 	 */
 	async recaptureDirty(

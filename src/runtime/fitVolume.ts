@@ -51,9 +51,11 @@ export interface FitPlan {
 	/**
 	 * `'none'`: a plain capture; `'fit'`: capture `points` too and fit; `'refit'`: refit to the stored
 	 * samples (a partial capture of a fitted volume, e.g. `recaptureDirty`); `'drop'`: a full capture
-	 * without `fit` of a fitted volume, which becomes plain (gradients and fit record cleared).
+	 * without `fit` of a fitted volume, which becomes plain (gradients and fit record cleared); `'unfit'`: a
+	 * partial capture of a volume with a fit record but no samples to refit to (loaded from a file), whose
+	 * captured probes get zero gradients and whose record is cleared.
 	 */
-	mode: 'none' | 'fit' | 'refit' | 'drop';
+	mode: 'none' | 'fit' | 'refit' | 'drop' | 'unfit';
 
 	/** The fit points to capture (mode `'fit'`), else null. */
 	points: Float64Array | null;
@@ -86,7 +88,7 @@ export function planFit(
 
 		const fitted = access.fit !== null || volume.fitSettings !== null;
 		if ( options.indices === undefined ) plan.mode = fitted ? 'drop' : 'none';
-		else plan.mode = access.fit !== null ? 'refit' : 'none';
+		else plan.mode = access.fit !== null ? 'refit' : ( fitted ? 'unfit' : 'none' );
 		return plan;
 
 	}
@@ -158,6 +160,17 @@ export function commitWithFit( plan: FitPlan, volume: LightProbeVolume, access: 
 	if ( plan.mode === 'none' ) {
 
 		if ( captured !== null ) access.commit( captured );
+		return;
+
+	}
+
+	if ( plan.mode === 'unfit' ) {
+
+		// No samples to refit to: the captured probes hold captured SH, so their fitted gradients go and the record is no longer true.
+		if ( capture.indices.length === 0 ) return;
+		for ( const index of capture.indices ) volume.gradients?.fill( 0, 3 * SH_FLOATS * index, 3 * SH_FLOATS * ( index + 1 ) );
+		access.commit( capture );
+		volume.fitSettings = null;
 		return;
 
 	}

@@ -4,7 +4,8 @@
  * function of the position — then fitted to extra captured points. Judged on held-out points
  * against the analytic SH: fitting lowers the error of the same probes, gradients lower it more;
  * the fit record is stored; an edit and `recaptureDirty` refit the edited layout to the stored
- * samples (as a fresh fit with the same λ would); a capture that fails while capturing the fit
+ * samples (as a fresh fit with the same λ would), and a volume loaded from a file (no samples) loses its fit
+ * record and the captured probes' gradients instead; a capture that fails while capturing the fit
  * points changes nothing; a capture without `fit` makes the volume plain again; bad options get
  * named errors before anything is captured.
  *
@@ -15,6 +16,8 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume, type LightProbeVolumeCaptureOptions } from '../../src/runtime/LightProbeVolume.js';
 import type { LightProbeVolumeFitOptions } from '../../src/runtime/fitVolume.js';
+import { decodeBakedVolume } from '../../src/io/decodeBakedVolume.js';
+import { encodeBakedVolume } from '../../src/io/encodeBakedVolume.js';
 import { placeGrid } from '../../src/placement/placeGrid.js';
 import { irradianceError } from '../../src/placement/irradianceError.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
@@ -255,6 +258,44 @@ describe.skipIf( ! ctx.renderer )( `capture option fit: probes fitted to extra c
 		const after = volume.sh.slice();
 		await volume.recaptureDirty( renderer, scene, { resolution: 16 } );
 		expect( Array.from( volume.sh ) ).toEqual( Array.from( after ) );
+
+	} );
+
+	it( 'loaded from a file (a fit record, no samples): a partial capture zeroes the captured probes\' gradients and drops the record', async () => {
+
+		const samples = randomPoints( 300, 2, 31 );
+		const fitted = new LightProbeVolume( { positions } );
+		await captureWith( fitted, { resolution: 16, fit: { samples, gradients: true } } );
+		const loaded = LightProbeVolume.fromBakedData( decodeBakedVolume( encodeBakedVolume( fitted.toBakedData() ) ) );
+		expect( loaded.fitSettings ).toEqual( fitted.fitSettings );
+		const sh = loaded.sh.slice(), gradients = loaded.gradients!.slice();
+		// Probe 5 is not moved: before the fix it would have kept its fitted gradient beside its captured SH.
+		expect( gradients.subarray( 81 * 5, 81 * 6 ).some( ( v ) => v !== 0 ) ).toBe( true );
+		await captureWith( loaded, { resolution: 16, indices: [ 5 ] } );
+		expect( loaded.fitSettings ).toBeNull();
+		expect( Array.from( loaded.gradients!.subarray( 81 * 5, 81 * 6 ) ).every( ( v ) => v === 0 ) ).toBe( true );
+		// Its SH are the captured ones (the analytic field there, as the first test checks), the other probes untouched.
+		const expected = truthAt( positions.subarray( 15, 18 ) );
+		const scale = Math.max( ...expected.map( Math.abs ) );
+		for ( let k = 0; k < 27; k ++ ) expect( Math.abs( loaded.sh[ 135 + k ] - expected[ k ] ) ).toBeLessThan( 2e-3 * scale );
+		for ( let i = 0; i < 27; i ++ ) {
+
+			if ( i === 5 ) continue;
+			expect( Array.from( loaded.sh.subarray( 27 * i, 27 * i + 27 ) ) ).toEqual( Array.from( sh.subarray( 27 * i, 27 * i + 27 ) ) );
+			expect( Array.from( loaded.gradients!.subarray( 81 * i, 81 * i + 81 ) ) ).toEqual( Array.from( gradients.subarray( 81 * i, 81 * i + 81 ) ) );
+
+		}
+
+		// The same after an edit: recaptureDirty of a moved probe of another loaded copy.
+		const edited = LightProbeVolume.fromBakedData( decodeBakedVolume( encodeBakedVolume( fitted.toBakedData() ) ) );
+		edited.moveProbe( 13, [ 0.4, - 0.3, 0.2 ] );
+		await edited.recaptureDirty( renderer, scene, { resolution: 16 } );
+		expect( edited.fitSettings ).toBeNull();
+		expect( Array.from( edited.gradients!.subarray( 81 * 13, 81 * 14 ) ).every( ( v ) => v === 0 ) ).toBe( true );
+		// A capture of nothing (no dirty probe) keeps a loaded record.
+		const untouched = LightProbeVolume.fromBakedData( decodeBakedVolume( encodeBakedVolume( fitted.toBakedData() ) ) );
+		await untouched.recaptureDirty( renderer, scene, { resolution: 16 } );
+		expect( untouched.fitSettings ).toEqual( fitted.fitSettings );
 
 	} );
 
