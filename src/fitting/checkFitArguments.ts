@@ -42,13 +42,17 @@ export interface CheckedFit {
 
 }
 
+/** Samples of a fit, checked, those of weight 0 dropped (the `CheckedFit` fields). */
+export type CheckedSamples = Pick<CheckedFit, 'positions' | 'sh' | 'weights'>;
+
 /**
  * Checks every argument of `fitProbeSH` (named errors; nothing is read twice) and keeps the samples
  * with a positive weight, so zero-weight samples cannot change any result.
+ * @param prepared The samples already checked by {@link checkFitSamples} (then `samples` is not read).
  */
 export function checkFitArguments(
 	where: string, interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
-	samples: FitSamples, options: FitProbeSHOptions | undefined,
+	samples: FitSamples, options: FitProbeSHOptions | undefined, prepared?: CheckedSamples,
 ): CheckedFit {
 
 	const { probeCount } = assertInterpolator( where, interpolator );
@@ -60,6 +64,29 @@ export function checkFitArguments(
 	}
 
 	assertSH( where, 'probeSH', probeSH, probeCount );
+	const { positions, sh, weights } = prepared ?? checkFitSamples( where, samples );
+	assertOptions( where, 'options', options );
+	const o = options ?? {};
+	for ( const key of Object.keys( o ) ) {
+
+		if ( ! OPTION_KEYS.includes( key ) ) throw new TypeError( `${where}: unknown option "${key}"; the options are ${OPTION_KEYS.join( ', ' )}.` );
+
+	}
+
+	const { gradients = false, lambda = 'auto', gradientLambda = 'auto', folds = 5, seed = 1, nonNegative = false } = o;
+	assertOptionalBoolean( where, 'options.gradients', gradients );
+	assertOptionalBoolean( where, 'options.nonNegative', nonNegative );
+	assertLambda( where, 'options.lambda', lambda );
+	assertLambda( where, 'options.gradientLambda', gradientLambda );
+	assertInteger( where, 'options.folds', folds, 2, 255 );
+	assertInteger( where, 'options.seed', seed, - 0x80000000, 0xFFFFFFFF );
+	return { probeCount, positions, sh, weights, gradients, lambda, gradientLambda, folds, seed, nonNegative };
+
+}
+
+/** Checks a fit's samples and keeps those with a positive weight, copied. */
+export function checkFitSamples( where: string, samples: FitSamples ): CheckedSamples {
+
 	if ( samples === null || typeof samples !== 'object' ) {
 
 		throw new TypeError( `${where}: samples must be { positions, sh, weights? }, got ${describeValue( samples )}.` );
@@ -101,22 +128,7 @@ export function checkFitArguments(
 
 	} );
 
-	assertOptions( where, 'options', options );
-	const o = options ?? {};
-	for ( const key of Object.keys( o ) ) {
-
-		if ( ! OPTION_KEYS.includes( key ) ) throw new TypeError( `${where}: unknown option "${key}"; the options are ${OPTION_KEYS.join( ', ' )}.` );
-
-	}
-
-	const { gradients = false, lambda = 'auto', gradientLambda = 'auto', folds = 5, seed = 1, nonNegative = false } = o;
-	assertOptionalBoolean( where, 'options.gradients', gradients );
-	assertOptionalBoolean( where, 'options.nonNegative', nonNegative );
-	assertLambda( where, 'options.lambda', lambda );
-	assertLambda( where, 'options.gradientLambda', gradientLambda );
-	assertInteger( where, 'options.folds', folds, 2, 255 );
-	assertInteger( where, 'options.seed', seed, - 0x80000000, 0xFFFFFFFF );
-	return { probeCount, positions, sh, weights, gradients, lambda, gradientLambda, folds, seed, nonNegative };
+	return { positions, sh, weights };
 
 }
 

@@ -1,12 +1,12 @@
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
-import { checkFitArguments } from './checkFitArguments.js';
+import { checkFitArguments, checkFitSamples, type CheckedSamples } from './checkFitArguments.js';
 import { chooseLambdas } from './crossValidation.js';
 import { createEnvelope } from './envelope.js';
 import { makeFitNonNegative } from './fitNonNegative.js';
 import { MEASURE_DIRECTIONS, weightedMeanIrradiance } from './irradianceMeasure.js';
 import { accumulateNormalEquations, createNormalEquations } from './normalEquations.js';
 import { weightedPredictionError } from './predictionError.js';
-import { buildSampleDesign, type SampleDesign } from './sampleDesign.js';
+import { buildSampleDesign, sampleVisitOrder, type SampleDesign } from './sampleDesign.js';
 import { createSolveScratch, solveRegularised } from './solveRegularised.js';
 
 /** Captured points a fit matches: where, what was captured there, and how much each counts. */
@@ -87,33 +87,49 @@ export function fitProbeSH(
 	samples: FitSamples, options?: FitProbeSHOptions,
 ): FitProbeSHResult {
 
-	return fitProbes( interpolator, probePositions, probeSH, samples, options, true );
+	return fitProbes( interpolator, probePositions, probeSH, samples, options, null );
+
+}
+
+/** Fit samples checked once for many fits over them: {@link prepareFitSamples}. Not public. */
+export interface PreparedFitSamples extends CheckedSamples {
+
+	/** The order the design visits them in. */
+	order: Uint32Array;
+
+}
+
+/** Checks `samples` (as `fitProbeSH` does) and orders them, for {@link fitProbeSHUnmeasured}. Not public. */
+export function prepareFitSamples( where: string, samples: FitSamples ): PreparedFitSamples {
+
+	const checked = checkFitSamples( where, samples );
+	return { ...checked, order: sampleVisitOrder( checked.positions ) };
 
 }
 
 /**
- * {@link fitProbeSH} without measuring `fitError` (NaN): for callers that measure the fitted field
- * themselves (reduceProbes' steps), where that pass over the samples is wasted. Not public.
+ * {@link fitProbeSH} over prepared samples, without measuring `fitError` (NaN): for callers that fit
+ * the same samples many times and measure the fitted field themselves (reduceProbes' steps). Not public.
  */
 export function fitProbeSHUnmeasured(
 	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
-	samples: FitSamples, options?: FitProbeSHOptions,
+	samples: PreparedFitSamples, options?: FitProbeSHOptions,
 ): FitProbeSHResult {
 
-	return fitProbes( interpolator, probePositions, probeSH, samples, options, false );
+	return fitProbes( interpolator, probePositions, probeSH, samples, options, samples );
 
 }
 
-/** {@link fitProbeSH}, with `fitError` measured or left NaN. */
+/** {@link fitProbeSH}; over `prepared` samples (then `fitError` is left NaN) when given. */
 function fitProbes(
 	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
-	samples: FitSamples, options: FitProbeSHOptions | undefined, measureFitError: boolean,
+	samples: FitSamples, options: FitProbeSHOptions | undefined, prepared: PreparedFitSamples | null,
 ): FitProbeSHResult {
 
 	const where = 'fitProbeSH';
-	const checked = checkFitArguments( where, interpolator, probePositions, probeSH, samples, options );
+	const checked = checkFitArguments( where, interpolator, probePositions, probeSH, samples, options, prepared ?? undefined );
 	const { positions, sh: truth, weights, gradients } = checked;
-	const design = buildSampleDesign( where, interpolator, probePositions, positions, weights, gradients );
+	const design = buildSampleDesign( where, interpolator, probePositions, positions, weights, gradients, prepared?.order );
 	const { stride, localToGlobal } = design;
 	const first = new Int32Array( stride * localToGlobal.length );
 	for ( let r = 0; r < first.length; r ++ ) first[ r ] = stride * design.firstNeighbour[ Math.floor( r / stride ) ];
@@ -172,7 +188,7 @@ function fitProbes(
 
 	return {
 		sh, gradients: gradientField, lambda, gradientLambda, crossValidationError,
-		fitError: measureFitError ? storedFitError( design, sh, gradientField, truth, weights, scale ) : NaN,
+		fitError: prepared === null ? storedFitError( design, sh, gradientField, truth, weights, scale ) : NaN,
 	};
 
 }

@@ -54,10 +54,11 @@ export interface SampleDesign {
  * @param positions 3 per sample.
  * @param weights One > 0 per sample.
  * @param gradients Whether each probe also has the 3 gradient unknowns.
+ * @param order The samples' {@link sampleVisitOrder}, when the caller keeps it between fits.
  */
 export function buildSampleDesign(
 	where: string, interpolator: ProbeInterpolator, probePositions: ArrayLike<number>,
-	positions: Float64Array, weights: Float64Array, gradients: boolean,
+	positions: Float64Array, weights: Float64Array, gradients: boolean, order = sampleVisitOrder( positions ),
 ): SampleDesign {
 
 	const count = weights.length, slots = interpolator.weightCount, probeCount = interpolator.probeCount;
@@ -67,7 +68,6 @@ export function buildSampleDesign(
 	const indices = new Uint32Array( slots ), values = new Float64Array( slots );
 	const globalToLocal = new Int32Array( probeCount ).fill( - 1 );
 	const localToGlobal: number[] = [];
-	const order = visitOrder( positions );
 	const cells = new Int32Array( count );
 	let hint = - 1, spread = 0;
 	for ( let v = 0; v < count; v ++ ) {
@@ -214,7 +214,7 @@ function sharedSamples( global: Int32Array, slots: number, globalToLocal: Int32A
 }
 
 /** Sample indices sorted along a 3D Hilbert curve over their bounding box (ties by index). */
-function visitOrder( positions: Float64Array ): Uint32Array {
+export function sampleVisitOrder( positions: Float64Array ): Uint32Array {
 
 	const count = positions.length / 3, bits = 7, cells = ( 1 << bits ) - 1;
 	const min = [ Infinity, Infinity, Infinity ], max = [ - Infinity, - Infinity, - Infinity ];

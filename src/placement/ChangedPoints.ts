@@ -32,7 +32,7 @@ export class ChangedPoints {
 
 	private readonly seen: Int32Array;
 	private stamp = 0;
-	private queried: Int32Array = new Int32Array( 256 );
+	private readonly range = new Int32Array( 6 );
 	private readonly cellProbes = new Int32Array( 4 );
 	private readonly cellMatrix = new Float64Array( 12 );
 	private readonly indices = new Uint32Array( 4 );
@@ -55,7 +55,8 @@ export class ChangedPoints {
 	inChangedCells( dynamic: DynamicTetrahedralization, idToLocal: Int32Array, grid: PointGrid, layout: FittedLayout ): number {
 
 		const cells = dynamic.lastEdit.changedCells, tetrahedra = dynamic.tetrahedra, p = dynamic.positions;
-		const points = grid.positions, probes = this.cellProbes, matrix = this.cellMatrix;
+		const points = grid.positions, probes = this.cellProbes, matrix = this.cellMatrix, range = this.range;
+		const start = grid.start, gridPoints = grid.points;
 		const stamp = ++ this.stamp;
 		this.count = 0;
 		for ( let k = 0; k < cells.length; k ++ ) {
@@ -76,27 +77,43 @@ export class ChangedPoints {
 			}
 
 			writeCellInverse( p, tetrahedra, t, matrix );
-			const query = grid.query( minX, minY, minZ, maxX, maxY, maxZ, this.queried );
-			this.queried = query.out;
-			for ( let q = 0; q < query.count; q ++ ) {
+			// The points in the grid cells the cell's box overlaps, read in place.
+			grid.cellRange( minX, minY, minZ, maxX, maxY, maxZ, range );
+			for ( let gz = range[ 2 ]; gz <= range[ 5 ]; gz ++ ) for ( let gy = range[ 1 ]; gy <= range[ 4 ]; gy ++ ) {
 
-				const j = this.queried[ q ];
-				if ( this.seen[ j ] === stamp ) continue; // already placed in another changed cell
-				const dx = points[ 3 * j ] - matrix[ 9 ], dy = points[ 3 * j + 1 ] - matrix[ 10 ], dz = points[ 3 * j + 2 ] - matrix[ 11 ];
-				const w0 = matrix[ 0 ] * dx + matrix[ 1 ] * dy + matrix[ 2 ] * dz;
-				const w1 = matrix[ 3 ] * dx + matrix[ 4 ] * dy + matrix[ 5 ] * dz;
-				const w2 = matrix[ 6 ] * dx + matrix[ 7 ] * dy + matrix[ 8 ] * dz;
-				const w3 = 1 - w0 - w1 - w2;
-				if ( ! ( w0 >= - INSIDE_SLACK && w1 >= - INSIDE_SLACK && w2 >= - INSIDE_SLACK && w3 >= - INSIDE_SLACK ) ) continue;
-				this.seen[ j ] = stamp;
-				this.record( j, probes, w0, w1, w2, w3 );
-				if ( ! this.sameAsLayout( layout, j ) ) this.count ++;
+				for ( let gx = range[ 0 ]; gx <= range[ 3 ]; gx ++ ) {
+
+					const c = grid.cellIndex( gx, gy, gz );
+					for ( let q = start[ c ], end = start[ c + 1 ]; q < end; q ++ ) {
+
+						this.tryPoint( gridPoints[ q ], points, probes, layout, stamp );
+
+					}
+
+				}
 
 			}
 
 		}
 
 		return this.count;
+
+	}
+
+	/** Records point j when it lies in the cell of `cellMatrix` / `probes` (and was in no earlier one) and its weights changed. */
+	private tryPoint( j: number, points: Float64Array, probes: Int32Array, layout: FittedLayout, stamp: number ): void {
+
+		const matrix = this.cellMatrix;
+		if ( this.seen[ j ] === stamp ) return; // already placed in another changed cell
+		const dx = points[ 3 * j ] - matrix[ 9 ], dy = points[ 3 * j + 1 ] - matrix[ 10 ], dz = points[ 3 * j + 2 ] - matrix[ 11 ];
+		const w0 = matrix[ 0 ] * dx + matrix[ 1 ] * dy + matrix[ 2 ] * dz;
+		const w1 = matrix[ 3 ] * dx + matrix[ 4 ] * dy + matrix[ 5 ] * dz;
+		const w2 = matrix[ 6 ] * dx + matrix[ 7 ] * dy + matrix[ 8 ] * dz;
+		const w3 = 1 - w0 - w1 - w2;
+		if ( ! ( w0 >= - INSIDE_SLACK && w1 >= - INSIDE_SLACK && w2 >= - INSIDE_SLACK && w3 >= - INSIDE_SLACK ) ) return;
+		this.seen[ j ] = stamp;
+		this.record( j, probes, w0, w1, w2, w3 );
+		if ( ! this.sameAsLayout( layout, j ) ) this.count ++;
 
 	}
 

@@ -13,8 +13,11 @@ export class PointGrid {
 	private readonly min: Float64Array;
 	private readonly inverse: Float64Array;
 	private readonly dims: Int32Array;
-	private readonly start: Int32Array;
-	private readonly points: Int32Array;
+	/** Per cell, where its points begin in `points` (one entry more than cells). */
+	readonly start: Int32Array;
+
+	/** Point indices, cell by cell. */
+	readonly points: Int32Array;
 
 	/** @param positions x, y, z per point (at least one). */
 	constructor( positions: Float64Array ) {
@@ -49,37 +52,21 @@ export class PointGrid {
 	}
 
 	/**
-	 * Writes the points in the cells the box [min, max] overlaps (a superset of those inside it) to
-	 * `out`, growing it when full.
-	 * @returns The (possibly new) output array and the count written.
+	 * Writes the cell range the box [min, max] overlaps to `out`: x0, y0, z0, x1, y1, z1 (inclusive).
+	 * Its points (a superset of those inside the box) are `points[ start[ c ] … start[ c + 1 ] − 1 ]`
+	 * for each `c = cellIndex( x, y, z )` in it, visited z, then y, then x outermost first.
 	 */
-	query(
-		minX: number, minY: number, minZ: number, maxX: number, maxY: number, maxZ: number, out: Int32Array,
-	): { out: Int32Array; count: number } {
+	cellRange( minX: number, minY: number, minZ: number, maxX: number, maxY: number, maxZ: number, out: Int32Array ): void {
 
-		const x0 = this.axisCell( minX, 0 ), y0 = this.axisCell( minY, 1 ), z0 = this.axisCell( minZ, 2 );
-		const x1 = this.axisCell( maxX, 0 ), y1 = this.axisCell( maxY, 1 ), z1 = this.axisCell( maxZ, 2 );
-		let count = 0;
-		for ( let z = z0; z <= z1; z ++ ) for ( let y = y0; y <= y1; y ++ ) for ( let x = x0; x <= x1; x ++ ) {
+		out[ 0 ] = this.axisCell( minX, 0 ); out[ 1 ] = this.axisCell( minY, 1 ); out[ 2 ] = this.axisCell( minZ, 2 );
+		out[ 3 ] = this.axisCell( maxX, 0 ); out[ 4 ] = this.axisCell( maxY, 1 ); out[ 5 ] = this.axisCell( maxZ, 2 );
 
-			const c = this.cellIndex( x, y, z );
-			for ( let k = this.start[ c ], end = this.start[ c + 1 ]; k < end; k ++ ) {
+	}
 
-				if ( count === out.length ) {
+	/** The index of grid cell (x, y, z) into `start`. */
+	cellIndex( x: number, y: number, z: number ): number {
 
-					const grown = new Int32Array( 2 * out.length + 64 );
-					grown.set( out );
-					out = grown;
-
-				}
-
-				out[ count ++ ] = this.points[ k ];
-
-			}
-
-		}
-
-		return { out, count };
+		return x + this.dims[ 0 ] * ( y + this.dims[ 1 ] * z );
 
 	}
 
@@ -88,12 +75,6 @@ export class PointGrid {
 
 		const c = Math.floor( ( v - this.min[ a ] ) * this.inverse[ a ] );
 		return c < 0 ? 0 : c >= this.dims[ a ] ? this.dims[ a ] - 1 : c;
-
-	}
-
-	private cellIndex( x: number, y: number, z: number ): number {
-
-		return x + this.dims[ 0 ] * ( y + this.dims[ 1 ] * z );
 
 	}
 

@@ -1,7 +1,7 @@
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import { fitProbeSHUnmeasured, type FitProbeSHResult } from '../fitting/fitProbeSH.js';
+import { fitProbeSHUnmeasured, prepareFitSamples, type FitProbeSHResult, type PreparedFitSamples } from '../fitting/fitProbeSH.js';
 import {
 	irradianceAtNormals, irradianceBasis, irradianceErrorScale, irradianceRow, summarizeErrors,
 	type IrradianceErrorSummary,
@@ -49,6 +49,9 @@ export interface RefitContext {
 
 	/** The objective: gradients or not, non-negativity. */
 	fit: FitSettings;
+
+	/** The fit set as `fitProbeSH` takes it, checked and ordered once for every fit. */
+	samples: PreparedFitSamples;
 
 }
 
@@ -118,7 +121,7 @@ export function createRefitContext( where: string, settings: ReduceSettings ): R
 	return {
 		where, positions: fitSet.positions, sh: fitSet.sh, denseCount: fitSet.denseCount, weights, givenWeights, totalWeight,
 		truth, stride: 3 * directions, basis: irradianceBasis( normals ), scale, visitOrder: hilbertOrder( fitSet.positions ),
-		fit: settings.fit!,
+		fit: settings.fit!, samples: prepareFitSamples( where, { positions: fitSet.positions, sh: fitSet.sh, weights: givenWeights } ),
 	};
 
 }
@@ -149,7 +152,7 @@ export function fitLayout(
 
 	const interpolator = createProbeInterpolator( positions );
 	// The fit's own error pass is skipped: every point's error is measured below, as the runtime blends it.
-	const result = fitProbeSHUnmeasured( interpolator, positions, captured, { positions: points, sh, weights: context.givenWeights }, {
+	const result = fitProbeSHUnmeasured( interpolator, positions, captured, context.samples, {
 		gradients, lambda, gradientLambda: gradients ? gradientLambda : 0, nonNegative: fit.nonNegative,
 	} );
 
