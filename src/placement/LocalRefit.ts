@@ -33,6 +33,9 @@ export class LocalRefit {
 	// Per point: the trial that last listed it, and its entry in `changed` (−1: the layout's weights).
 	private readonly pointStamp: Int32Array;
 	private readonly pointEntry: Int32Array;
+
+	// The points a trial's estimate sums over (each at most once: at most every point).
+	private readonly trialPoints: Int32Array;
 	private stamp = 0;
 
 	// The layout's positions, unknowns and unknown rows with room for one probe more: a trial
@@ -57,6 +60,7 @@ export class LocalRefit {
 		this.changed = new ChangedPoints( count );
 		this.pointStamp = new Int32Array( count );
 		this.pointEntry = new Int32Array( count );
+		this.trialPoints = new Int32Array( count );
 		for ( let i = 0; i < layout.order.length; i ++ ) this.mapId( i, i );
 		this.layout = layout;
 		this.copyLayout();
@@ -220,13 +224,14 @@ export class LocalRefit {
 	private estimate( edited: number, c: number, inserted: boolean ): number {
 
 		const { context, layout, changed } = this, stamp = ++ this.stamp;
-		const points: number[] = [];
+		const points = this.trialPoints;
+		let count = 0;
 		for ( let f = 0; f < changed.count; f ++ ) {
 
 			const j = changed.points[ f ];
 			this.pointStamp[ j ] = stamp;
 			this.pointEntry[ j ] = f;
-			if ( context.weights[ j ] > 0 ) points.push( j );
+			if ( context.weights[ j ] > 0 ) points[ count ++ ] = j;
 
 		}
 
@@ -239,7 +244,7 @@ export class LocalRefit {
 				if ( this.pointStamp[ j ] === stamp ) continue;
 				this.pointStamp[ j ] = stamp;
 				this.pointEntry[ j ] = - 1;
-				points.push( j );
+				points[ count ++ ] = j;
 
 			}
 
@@ -248,12 +253,13 @@ export class LocalRefit {
 		const stride = layout.stride, unknowns = this.trialUnknowns, rows = this.trialRows, positions = this.trialPositions;
 		positions.set( context.positions.subarray( 3 * c, 3 * c + 3 ), 3 * edited );
 		let change = NaN;
-		if ( this.solve( points, edited, c, inserted ) ) {
+		if ( this.solve( points, count, edited, c, inserted ) ) {
 
 			writeUnknownRows( context, unknowns, edited, stride, rows );
 			change = 0;
-			for ( const j of points ) {
+			for ( let q = 0; q < count; q ++ ) {
 
+				const j = points[ q ];
 				const f = this.pointEntry[ j ];
 				const error = f >= 0
 					? predictedError( context, j, changed.slots, changed.weights, positions, rows, stride, layout.lengthScale, 4 * f )
@@ -277,15 +283,15 @@ export class LocalRefit {
 	 * writing them into the trial unknowns.
 	 * @returns false when its system stayed singular.
 	 */
-	private solve( points: number[], edited: number, c: number, inserted: boolean ): boolean {
+	private solve( points: Int32Array, count: number, edited: number, c: number, inserted: boolean ): boolean {
 
 		const { context, layout, changed, matrix, rhs, factors, target } = this;
 		const stride = layout.stride, h = layout.lengthScale, unknowns = this.trialUnknowns, positions = this.trialPositions;
 		matrix.fill( 0 );
 		rhs.fill( 0 );
-		for ( const j of points ) {
+		for ( let q = 0; q < count; q ++ ) {
 
-			const f = this.pointEntry[ j ];
+			const j = points[ q ], f = this.pointEntry[ j ];
 			const slots = f >= 0 ? changed.slots : layout.slots, weights = f >= 0 ? changed.weights : layout.slotWeights;
 			const offset = f >= 0 ? 4 * f : 4 * j;
 			const x = context.positions[ 3 * j ], y = context.positions[ 3 * j + 1 ], z = context.positions[ 3 * j + 2 ];
@@ -308,11 +314,17 @@ export class LocalRefit {
 
 				// A probe held at its fit: its part of the prediction moves to the target side.
 				const base = 27 * stride * i;
+				if ( stride === 1 ) {
+
+					for ( let k = 0; k < 27; k ++ ) target[ k ] -= w * unknowns[ base + k ];
+					continue;
+
+				}
+
 				for ( let k = 0; k < 27; k ++ ) {
 
 					let v = w * unknowns[ base + k ];
-					if ( stride === 4 ) v += fx * unknowns[ base + 27 + k ] + fy * unknowns[ base + 54 + k ]
-						+ fz * unknowns[ base + 81 + k ];
+					v += fx * unknowns[ base + 27 + k ] + fy * unknowns[ base + 54 + k ] + fz * unknowns[ base + 81 + k ];
 					target[ k ] -= v;
 
 				}
