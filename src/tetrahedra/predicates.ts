@@ -48,7 +48,7 @@ const ISP_UNDERFLOW = 2 ** - 800;
  * the first stage's error bound is at most the "permanent" (the determinant's terms in absolute
  * value) times a constant, and for points within a box of diagonal Δ the permanent is at most
  * 6Δ³ (orient) or 72Δ⁵ (inSphere); a value beyond that bound is decided before the permanent is
- * computed. Why it is safe and what it saves: docs/robustness.md.
+ * computed. Why it is safe and what it saves: docs/tetrahedralize-speed.md.
  */
 
 /**

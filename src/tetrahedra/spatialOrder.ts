@@ -141,8 +141,8 @@ export function insertionOrder( points: Float64Array, indices: Uint32Array, seed
 
 }
 
-// Rounds of at least this many points are radix sorted; smaller ones sort packed doubles.
-const RADIX_MIN = 2048;
+// Rounds of at least this many points are radix sorted (three passes over 1024 buckets); smaller ones sort packed doubles.
+const RADIX_MIN = 128;
 const POSITION_RANGE = 2 ** 23;
 const _histogram = new Int32Array( 1024 );
 
