@@ -8,9 +8,7 @@ import {
 	assertBakedVolumeParameters, checkBakedData, parametersFromBakedData, toBakedVolumeInput, type BakedVolumeParameters,
 } from './bakedVolumeData.js';
 import { captureVolume } from './captureBounces.js';
-import { CAPTURE_ACCESS, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
-import { blendProbes } from './gradientBlend.js';
-import { readGradients } from './gradientProbes.js';
+import { CAPTURE_ACCESS, captureAccessOf, type CaptureAccess } from './captureProbes.js';
 import type {
 	AddOptions, AddProbeOptions, LightProbeVolumeCaptureOptions, LightProbeVolumeParameters, ProbeLighting, ProbeOccluders, ProbePosition,
 	SampleOptions,
@@ -20,8 +18,9 @@ import { LitObjectRegistry } from './LitObjectRegistry.js';
 import { ProbeEdits } from './ProbeEdits.js';
 import { medianProbeSpacing } from './probeSpacing.js';
 import { ProbeWeighting, defaultMoveThreshold, invalidateVisibility } from './ProbeWeighting.js';
-import { ProbeZones, zoneIndexOf } from './ProbeZones.js';
-import { assertRecaptureArguments, assertSHTarget, readPosition, readVolumeParameters } from './volumeArguments.js';
+import { ProbeZones } from './ProbeZones.js';
+import { sampleVolume } from './sampleVolume.js';
+import { assertRecaptureArguments, readVolumeParameters } from './volumeArguments.js';
 import { VisibilityGuard, type VisibilityGuardOptions } from './VisibilityGuard.js';
 import type { FromSceneOptions } from './volumeFromScene.js';
 import type { ProbeVolumeUniforms } from './patchMaterial.js';
@@ -246,15 +245,7 @@ export class LightProbeVolume {
 	 */
 	[ CAPTURE_ACCESS ](): CaptureAccess {
 
-		const commit = ( captured: CapturedProbes ) => {
-
-			if ( this.edits.commitCapture( captured ) ) this.captureSettings = captured.settings;
-			this.objects.probesChanged();
-
-		};
-
-		const edits = this.edits;
-		return { lit: this.objects.lit, commit, fit: edits.fit, adoptFit: ( store ) => { edits.fit = store; } };
+		return captureAccessOf( this, this.edits, this.objects.lit, () => this.objects.probesChanged() );
 
 	}
 
@@ -352,11 +343,7 @@ export class LightProbeVolume {
 	 */
 	setGradients( gradients: ArrayLike<number> | null ): this {
 
-		const where = 'LightProbeVolume.setGradients';
-		const next = gradients === null ? null : readGradients( where, 'gradients', gradients, this.positions, this.count );
-		this.gradients = this.edits.adoptGradients( next );
-		// Gradients set by hand make a record of fitted gradients untrue; the fit path sets its record after this call.
-		if ( next === null && this.fitSettings?.gradients === true ) this.fitSettings = null;
+		this.edits.setGradients( 'LightProbeVolume.setGradients', gradients );
 		this.objects.probesChanged();
 		return this;
 
@@ -415,16 +402,7 @@ export class LightProbeVolume {
 	 */
 	sample( position: ProbePosition, target: Float32Array = new Float32Array( SH_FLOATS ), options: SampleOptions = {} ): Float32Array {
 
-		const where = 'LightProbeVolume.sample';
-		const [ x, y, z ] = readPosition( where, position );
-		assertSHTarget( where, target );
-		assertOptions( where, 'options', options );
-		const zone = options.zone !== undefined
-			? zoneIndexOf( where, this.zones, options.zone )
-			: ( this.zones ? this.zones.zoneAt( x, y, z ) : - 1 );
-		this.weighting.weigh( x, y, z, zone, - 1, null );
-		const { indices, weights, count } = this.weighting;
-		return blendProbes( indices, weights, count, this.sh, this.gradients, this.positions, x, y, z, target );
+		return sampleVolume( 'LightProbeVolume.sample', this, this.weighting, position, target, options );
 
 	}
 

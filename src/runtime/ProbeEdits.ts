@@ -1,3 +1,4 @@
+import type { BakedFit } from '../io/index.js';
 import { IncrementalTetrahedralMesh } from '../interpolation/IncrementalTetrahedralMesh.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
@@ -6,7 +7,7 @@ import { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralizati
 import { SH_FLOATS, assertOptions, assertProbeSH } from '../validate.js';
 import type { CapturedProbes } from './captureProbes.js';
 import { blendProbes } from './gradientBlend.js';
-import { GRADIENT_FLOATS } from './gradientProbes.js';
+import { GRADIENT_FLOATS, readGradients } from './gradientProbes.js';
 import type { AddProbeOptions, ProbePosition } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
 import { MAX_WEIGHTS, invalidateVisibility } from './ProbeWeighting.js';
@@ -20,6 +21,7 @@ export interface EditedVolume {
 	positions: Float64Array;
 	sh: Float32Array;
 	gradients: Float32Array | null;
+	fitSettings: BakedFit | null;
 	interpolator: ProbeInterpolator;
 	readonly names: string[];
 	readonly roles: ProbeRole[];
@@ -110,20 +112,24 @@ export class ProbeEdits {
 	}
 
 	/**
-	 * `LightProbeVolume.setGradients` once checked: the gradients to keep (null for plain probes), with removed probes'
-	 * gradients zeroed; the next added probe starts a new store from them.
+	 * `LightProbeVolume.setGradients`: checks them (errors naming `where`, nothing changed), copies them into the volume
+	 * with removed probes' gradients zeroed (the next added probe starts a new store from them), or makes the probes plain
+	 * with null — which also drops a record of fitted gradients, no longer true.
 	 */
-	adoptGradients( gradients: Float32Array | null ): Float32Array | null {
+	setGradients( where: string, gradients: ArrayLike<number> | null ): void {
 
+		const volume = this.volume;
+		const next = gradients === null ? null : readGradients( where, 'gradients', gradients, volume.positions, volume.count );
 		this.gradientStore = null;
-		if ( gradients === null ) return null;
-		for ( let i = 0; i < this.volume.count; i ++ ) {
+		for ( let i = 0; next !== null && i < volume.count; i ++ ) {
 
-			if ( ! this.isActive( i ) ) gradients.fill( 0, GRADIENT_FLOATS * i, GRADIENT_FLOATS * ( i + 1 ) );
+			if ( ! this.isActive( i ) ) next.fill( 0, GRADIENT_FLOATS * i, GRADIENT_FLOATS * ( i + 1 ) );
 
 		}
 
-		return gradients;
+		volume.gradients = next;
+		// The fit path sets its own record after this call.
+		if ( next === null && volume.fitSettings?.gradients === true ) volume.fitSettings = null;
 
 	}
 

@@ -7,6 +7,7 @@ import { SH_FLOATS } from '../validate.js';
 import { bakedCaptureSettings } from './bakedVolumeData.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
+import type { ProbeEdits } from './ProbeEdits.js';
 import type { ProbeField } from './ProbeField.js';
 import { lightScenery, switchOffScenery } from './sceneryLight.js';
 import type { VolumeFit } from './VolumeFit.js';
@@ -44,6 +45,26 @@ export interface CaptureAccess {
 
 	/** Keeps a new fit store (a fitting capture, `fromScene`), or null: the volume is no longer fitted. */
 	adoptFit( store: VolumeFit | null ): void;
+
+}
+
+/**
+ * The {@link CaptureAccess} of a volume: its registered objects, its fit store (kept by its edits), and the commit of a
+ * finished capture — SH and dirty set ({@link ProbeEdits.commitCapture}), then the capture settings — after which
+ * `probesChanged` lets its objects blend again.
+ */
+export function captureAccessOf(
+	volume: { captureSettings: BakedCapture }, edits: ProbeEdits, lit: readonly LitObject[], probesChanged: () => void,
+): CaptureAccess {
+
+	const commit = ( captured: CapturedProbes ) => {
+
+		if ( edits.commitCapture( captured ) ) volume.captureSettings = captured.settings;
+		probesChanged();
+
+	};
+
+	return { lit, commit, fit: edits.fit, adoptFit: ( store ) => { edits.fit = store; } };
 
 }
 

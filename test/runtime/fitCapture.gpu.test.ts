@@ -282,7 +282,8 @@ describe.skipIf( ! ctx.renderer )( `capture option fit: probes fitted to extra c
 
 			if ( i === 5 ) continue;
 			expect( Array.from( loaded.sh.subarray( 27 * i, 27 * i + 27 ) ) ).toEqual( Array.from( sh.subarray( 27 * i, 27 * i + 27 ) ) );
-			expect( Array.from( loaded.gradients!.subarray( 81 * i, 81 * i + 81 ) ) ).toEqual( Array.from( gradients.subarray( 81 * i, 81 * i + 81 ) ) );
+			const gradient = Array.from( gradients.subarray( 81 * i, 81 * i + 81 ) );
+			expect( Array.from( loaded.gradients!.subarray( 81 * i, 81 * i + 81 ) ) ).toEqual( gradient );
 
 		}
 
