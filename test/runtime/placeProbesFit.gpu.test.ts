@@ -99,7 +99,7 @@ describe.skipIf( ! ctx.renderer )( `placeProbes with fit, swaps, region, weights
 		const pointTruth = new Float32Array( [ ...candidateSH, ...fitSamples.sh ] );
 		const weights = regionWeights( points, region ).map( ( w, i ) => ( i < n ? w * weigh( points[ 3 * i ] ) : w ) );
 		const error = irradianceError( sampled( volume, points ), pointTruth, undefined, weights ).mean;
-		// The runtime's blend (outer cells, the gradient formula) is the one reduceProbes fits and measures with.
+		// The runtime's blend (outer cells, the gradient formula) is the one reduceProbes fits and measures with (measured: equal to 1e-9).
 		expect( error ).toBeCloseTo( reduction.error.mean, 4 );
 		volume.dispose();
 
@@ -113,7 +113,8 @@ describe.skipIf( ! ctx.renderer )( `placeProbes with fit, swaps, region, weights
 		const fitted = new LightProbeVolume( { positions: reduction.positions, sh: reduction.sh, gradients: reduction.gradients! } );
 		const fittedError = irradianceError( sampled( fitted, held ), truth ).mean;
 		const capturedError = irradianceError( sampled( captured, held ), truth ).mean;
-		expect( fittedError, `fitted ${fittedError.toFixed( 4 )}, captured ${capturedError.toFixed( 4 )}` ).toBeLessThan( 0.9 * capturedError );
+		// Measured (llvmpipe): fitted 0.039, captured 0.196 — the 16 probes' own SH miss the lamp's fall-off between them.
+		expect( fittedError, `fitted ${fittedError.toFixed( 4 )}, captured ${capturedError.toFixed( 4 )}` ).toBeLessThan( 0.5 * capturedError );
 		captured.dispose();
 		fitted.dispose();
 
