@@ -56,7 +56,9 @@ export function hilbertIndex3( x: number, y: number, z: number, bits: number ): 
 
 	X0 ^= t; X1 ^= t; X2 ^= t;
 
-	// Interleave the transposed bits into one index, most significant first.
+	// Interleave the transposed bits into one index, most significant first: bit b of X0, X1, X2 goes
+	// to bit 3b + 2, 3b + 1, 3b (by spreading each over every third bit when the index fits 30 bits).
+	if ( bits <= 10 ) return ( spreadBits( X0 ) << 2 ) | ( spreadBits( X1 ) << 1 ) | spreadBits( X2 );
 	let index = 0;
 	for ( let b = bits - 1; b >= 0; b -- ) {
 
@@ -65,6 +67,17 @@ export function hilbertIndex3( x: number, y: number, z: number, bits: number ): 
 	}
 
 	return index;
+
+}
+
+/** The low 10 bits of x moved to bits 0, 3, 6, … 27. */
+function spreadBits( x: number ): number {
+
+	x &= 0x3FF;
+	x = ( x | ( x << 16 ) ) & 0x30000FF;
+	x = ( x | ( x << 8 ) ) & 0x300F00F;
+	x = ( x | ( x << 4 ) ) & 0x30C30C3;
+	return ( x | ( x << 2 ) ) & 0x9249249;
 
 }
 

@@ -70,6 +70,36 @@ function clumpedPoints( n: number, seed: number ): Float64Array {
 
 }
 
+describe( 'hilbertIndex3', () => {
+
+	it( 'numbers every cell of a 2^b grid once, consecutive numbers on neighbouring cells (b = 1 … 5)', () => {
+
+		for ( let bits = 1; bits <= 5; bits ++ ) {
+
+			const side = 1 << bits, cellAt = new Int32Array( side ** 3 ).fill( - 1 );
+			for ( let x = 0; x < side; x ++ ) for ( let y = 0; y < side; y ++ ) for ( let z = 0; z < side; z ++ ) {
+
+				const h = hilbertIndex3( x, y, z, bits );
+				expect( cellAt[ h ], `bits ${bits}: index ${h} given twice` ).toBe( - 1 );
+				cellAt[ h ] = ( x * side + y ) * side + z;
+
+			}
+
+			for ( let h = 1; h < side ** 3; h ++ ) {
+
+				const a = cellAt[ h - 1 ], b = cellAt[ h ];
+				const steps = Math.abs( Math.floor( a / side / side ) - Math.floor( b / side / side ) ) +
+					Math.abs( Math.floor( a / side ) % side - Math.floor( b / side ) % side ) + Math.abs( ( a % side ) - ( b % side ) );
+				expect( steps, `bits ${bits}: indices ${h - 1}, ${h}` ).toBe( 1 );
+
+			}
+
+		}
+
+	} );
+
+} );
+
 describe( 'insertionOrder', () => {
 
 	it( 'is the shuffled, round-wise Hilbert-sorted order, equal keys in shuffled order (small and radix-sorted rounds)', () => {
