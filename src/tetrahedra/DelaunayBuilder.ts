@@ -19,6 +19,13 @@ export const CELL = 8;
 /** log2 of {@link CELL}. */
 export const CELL_SHIFT = 3;
 
+/** Negative when x ≠ 0, else 0. */
+function nonZero( x: number ): number {
+
+	return x | - x;
+
+}
+
 const _startCells = new Int32Array( 5 );
 const _startVertices = new Int32Array( 4 );
 
@@ -419,7 +426,7 @@ export class DelaunayBuilder {
 		let size = 64;
 		while ( size < boundarySize * 8 ) size *= 2;
 		const table = this.prepareEdgeTable( size );
-		const mask = size - 1, shift = Math.clz32( mask );
+		const shift = Math.clz32( size - 1 ), mask = 4 * size - 1;
 		const edgeStamp = ++ this.stamp;
 		// Slots as `allocate` hands them out (free list first, LIFO), inlined: `reserve` made room.
 		const freeList = this.freeList;
@@ -451,33 +458,27 @@ export class DelaunayBuilder {
 				const link = k + 4 + ( ( i + r ) & 3 );
 				const from = x2 ^ ( ( x2 ^ x3 ) & odd ), to = x2 ^ x3 ^ from;
 				const rest = x1; x1 = x2; x2 = x3; x3 = rest;
-				let h = ( Math.imul( from, - 1640531535 ) ^ Math.imul( to, - 1640531535 ) ) >>> shift;
-				for ( ;; ) {
+				let e = ( ( Math.imul( from, - 1640531535 ) ^ Math.imul( to, - 1640531535 ) ) >>> shift ) << 2;
+				// Step past entries of this insertion that hold another edge: "taken and not the reversed
+				// edge" as one sign test (stamps are positive, so the stamp difference is 0 only when taken).
+				while ( ( ( ( table[ e ] ^ edgeStamp ) - 1 ) & nonZero( ( table[ e + 1 ] ^ to ) | ( table[ e + 2 ] ^ from ) ) ) < 0 ) {
 
-					const e = 4 * h;
-					if ( table[ e ] !== edgeStamp ) {
-
-						table[ e ] = edgeStamp;
-						table[ e + 1 ] = from;
-						table[ e + 2 ] = to;
-						table[ e + 3 ] = link;
-						break;
-
-					}
-
-					// Each directed edge occurs once, so a matched entry is never looked up again.
-					if ( table[ e + 1 ] === to && table[ e + 2 ] === from ) {
-
-						const other = table[ e + 3 ];
-						v[ link ] = other;
-						v[ other ] = link;
-						break;
-
-					}
-
-					h = ( h + 1 ) & mask;
+					e = ( e + 4 ) & mask;
 
 				}
+
+				// Whether the entry holds the face across (found: −1) or is free (0) is as good as random,
+				// so both cases run the same stores: link the two faces, or link this face to itself for
+				// now (the face across overwrites it). The entry is (over)written either way: a matched
+				// entry is never looked up again (each directed edge occurs once) and stays taken.
+				const found = ( ( table[ e ] ^ edgeStamp ) - 1 ) >> 31;
+				const across = link ^ ( ( table[ e + 3 ] ^ link ) & found );
+				v[ link ] = across;
+				v[ across ] = link;
+				table[ e ] = edgeStamp;
+				table[ e + 1 ] = from;
+				table[ e + 2 ] = to;
+				table[ e + 3 ] = link;
 
 			}
 
