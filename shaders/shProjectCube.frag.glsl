@@ -8,7 +8,9 @@
 // The output is a tiles × tiles grid per probe, one row block per probe, in seven float planes
 // (shPack); shReduce and shGather sum each grid to one texel. With SOURCES > 1 one draw projects up
 // to that many cube maps, one row block each, which saves a render pass and a texture barrier per
-// probe where the faces are small.
+// probe where the faces are small. With FACES the six faces come as 2D textures (copies of a cube
+// render target's faces), read by texelFetch, which software rasterisers (SwiftShader) do faster
+// than cube lookups: worth the copy where the faces are large.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -25,6 +27,14 @@ uniform samplerCube cubeMap6;
 uniform samplerCube cubeMap7;
 uniform int tiles;
 #endif
+#ifdef FACES
+uniform sampler2D face0;
+uniform sampler2D face1;
+uniform sampler2D face2;
+uniform sampler2D face3;
+uniform sampler2D face4;
+uniform sampler2D face5;
+#endif
 // ceil(size / 2)² texel solid angles of one face quadrant, the same on every face and mirror image;
 // halved on an odd size's middle row and column, whose mirror images are the texel itself.
 uniform sampler2D solidAngles;
@@ -33,6 +43,26 @@ uniform int block;
 uniform int rowOffset;
 
 #include <shPack>
+
+// The four mirror images' radiances combined by parity: E even, P odd in s, Q odd in t, R odd in both.
+void paritySums( const in vec3 pp, const in vec3 pm, const in vec3 mp, const in vec3 mm, out vec3 E, out vec3 P, out vec3 Q, out vec3 R ) {
+
+	vec3 sPlus = pp + pm, sMinus = mp + mm, tOddPlus = pp - pm, tOddMinus = mp - mm;
+	E = sPlus + sMinus;
+	P = sPlus - sMinus;
+	Q = tOddPlus + tOddMinus;
+	R = tOddPlus - tOddMinus;
+
+}
+
+// The parity sums of face texels ( high.x, high.y ) at ( s, t ), ( high.x, low.y ) at ( s, −t ),
+// ( low.x, high.y ) at ( −s, t ) and ( low.x, low.y ) at ( −s, −t ) of a face copied to a 2D texture.
+void faceTexelSums( sampler2D face, const in ivec2 low, const in ivec2 high, out vec3 E, out vec3 P, out vec3 Q, out vec3 R ) {
+
+	paritySums( texelFetch( face, high, 0 ).rgb, texelFetch( face, ivec2( high.x, low.y ), 0 ).rgb,
+		texelFetch( face, ivec2( low.x, high.y ), 0 ).rgb, texelFetch( face, low, 0 ).rgb, E, P, Q, R );
+
+}
 
 // The directions through the texel centres (±s, ±t) of one face, s, t ≥ 0: the inverse of the
 // OpenGL ES 3.0 cube map face selection (section 3.8.10), so texture() lands on those very texels
@@ -73,15 +103,11 @@ void faceSums( samplerCube cubeMap, const in int face, const in float s, const i
 
 	}
 
-	vec3 sPlus = pp + pm, sMinus = mp + mm, tOddPlus = pp - pm, tOddMinus = mp - mm;
-	E = sPlus + sMinus;
-	P = sPlus - sMinus;
-	Q = tOddPlus + tOddMinus;
-	R = tOddPlus - tOddMinus;
+	paritySums( pp, pm, mp, mm, E, P, Q, R );
 
 }
 
-// Integrates the tile's block of positions of `cubeMap` and writes the sums.
+// Integrates the tile's block of positions of `cubeMap` (of face0..5 with FACES) and writes the sums.
 void project( samplerCube cubeMap, const in ivec2 tile ) {
 
 	int quadrant = ( size + 1 ) / 2;
@@ -105,12 +131,22 @@ void project( samplerCube cubeMap, const in ivec2 tile ) {
 			// The unit direction of ( s, t ) on face 0 is ( A, −T, −S ) (up to signs and order on the others).
 			float A = inversesqrt( 1.0 + s * s + t * t ), S = s * A, T = t * A;
 			vec3 E0, P0, Q0, R0, E1, P1, Q1, R1, E2, P2, Q2, R2, E3, P3, Q3, R3, E4, P4, Q4, R4, E5, P5, Q5, R5;
+			#ifdef FACES
+			ivec2 low = ivec2( i, j ), high = ivec2( size - 1 - i, size - 1 - j );
+			faceTexelSums( face0, low, high, E0, P0, Q0, R0 );
+			faceTexelSums( face1, low, high, E1, P1, Q1, R1 );
+			faceTexelSums( face2, low, high, E2, P2, Q2, R2 );
+			faceTexelSums( face3, low, high, E3, P3, Q3, R3 );
+			faceTexelSums( face4, low, high, E4, P4, Q4, R4 );
+			faceTexelSums( face5, low, high, E5, P5, Q5, R5 );
+			#else
 			faceSums( cubeMap, 0, s, t, E0, P0, Q0, R0 );
 			faceSums( cubeMap, 1, s, t, E1, P1, Q1, R1 );
 			faceSums( cubeMap, 2, s, t, E2, P2, Q2, R2 );
 			faceSums( cubeMap, 3, s, t, E3, P3, Q3, R3 );
 			faceSums( cubeMap, 4, s, t, E4, P4, Q4, R4 );
 			faceSums( cubeMap, 5, s, t, E5, P5, Q5, R5 );
+			#endif
 			float AS = A * S, AT = A * T, ST = S * T;
 			vec3 xFaces = E0 + E1, yFaces = E2 + E3, zFaces = E4 + E5;
 			// Y_k without its constant (applied once at the end), summed over the 24 texels.

@@ -181,7 +181,7 @@ function disposeCubes(): void {
 }
 
 /**
- * Ours: one SHProjector batch of `probes` cube maps (cycling through the prepared ones):
+ * Ours: one SHProjector batch of `probes` cube render targets (cycling through the prepared ones):
  * begin, add × probes, finish (reduction + the read-back of 27 floats per probe, which waits for
  * the GPU). Returns the batch time and the SH of the first prepared cube maps.
  */
@@ -192,7 +192,9 @@ function oursProjectBatch( probes: number, solidAngle: 'exact' | 'paper' = 'exac
 	const sh = new Float32Array( 27 * probes );
 	const start = performance.now();
 	projector.begin( 'cube', cubeSize, probes, { solidAngle } );
-	for ( let i = 0; i < probes; i ++ ) projector.add( targets[ i % targets.length ].texture );
+	// The render targets, as ProbeCapturer gives them: from 128² on their faces are copied to 2D
+	// textures first (timed), which SwiftShader reads faster than a cube map.
+	for ( let i = 0; i < probes; i ++ ) projector.add( targets[ i % targets.length ] );
 	projector.finish( sh );
 	const ms = performance.now() - start;
 	const first: number[][] = [];

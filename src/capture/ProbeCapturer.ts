@@ -1,6 +1,6 @@
 import {
 	CubeCamera, FloatType, NearestFilter, WebGLCubeRenderTarget,
-	type CubeTexture, type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
+	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
@@ -86,9 +86,8 @@ export class ProbeCapturer {
 
 	private readonly solidAngle: CubeSolidAngleMode;
 	private readonly shadowMaps: ShadowMapFreeze;
-	// cubeRenderTarget and the group's other targets, their textures, created when first needed.
+	// cubeRenderTarget and the group's other targets, created when first needed.
 	private readonly groupTargets: WebGLCubeRenderTarget[];
-	private readonly groupTextures: CubeTexture[];
 	private readonly groupSize: number;
 	private readonly type: TextureDataType;
 	private busy = false;
@@ -108,7 +107,6 @@ export class ProbeCapturer {
 		this.type = type;
 		this.cubeRenderTarget = this.createTarget();
 		this.groupTargets = [ this.cubeRenderTarget ];
-		this.groupTextures = [ this.cubeRenderTarget.texture ];
 		const bytes = 6 * resolution * resolution * ( type === FloatType ? 16 : 8 );
 		this.groupSize = Math.max( 1, Math.min( SHProjector.maxCubesPerDraw, Math.floor( GROUP_BYTES / bytes ) ) );
 		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
@@ -166,13 +164,7 @@ export class ProbeCapturer {
 
 			scene.updateMatrixWorld();
 			const group = Math.min( this.groupSize, count );
-			while ( this.groupTargets.length < group ) {
-
-				const extra = this.createTarget();
-				this.groupTargets.push( extra );
-				this.groupTextures.push( extra.texture );
-
-			}
+			while ( this.groupTargets.length < group ) this.groupTargets.push( this.createTarget() );
 
 			for ( let start = 0; start < count; start += batch ) {
 
@@ -188,8 +180,9 @@ export class ProbeCapturer {
 					cubeCamera.updateMatrixWorld();
 					renderer.autoClear = true; // every face must start cleared
 					cubeCamera.update( renderer, scene );
-					if ( k === group - 1 ) projector.add( group === 1 ? this.groupTextures[ 0 ] : this.groupTextures.slice( 0, group ) );
-					else if ( i === start + size - 1 ) projector.add( this.groupTextures.slice( 0, k + 1 ) );
+					// The targets, not their textures: large faces are then read from 2D copies (SHProjector.add).
+					if ( k === group - 1 ) projector.add( group === 1 ? this.groupTargets[ 0 ] : this.groupTargets.slice( 0, group ) );
+					else if ( i === start + size - 1 ) projector.add( this.groupTargets.slice( 0, k + 1 ) );
 					options.onProgress?.( i + 1, count );
 
 					// Give a page a frame now and then to paint its progress bar, with the hidden

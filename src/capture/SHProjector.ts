@@ -1,7 +1,7 @@
 import {
-	DataTexture, FloatType, GLSL3, Mesh, NearestFilter, OrthographicCamera, PlaneGeometry, RawShaderMaterial,
+	DataTexture, FloatType, FramebufferTexture, GLSL3, Mesh, NearestFilter, OrthographicCamera, PlaneGeometry, RawShaderMaterial,
 	RedFormat, RGBAFormat, Scene, WebGLRenderTarget,
-	type CubeTexture, type Texture, type WebGLRenderer,
+	type CubeTexture, type Texture, type WebGLCubeRenderTarget, type WebGLRenderer,
 } from 'three';
 import { fullscreenVert, shGatherFrag, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
 import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../sh/cubeTexelSolidAngle.js';
@@ -21,6 +21,20 @@ const GATHER_TILES = 4;
 // Cube maps one draw can project (shProjectCube's SOURCES), beside the solid-angle texture: well
 // within the 16 texture units WebGL2 guarantees.
 const MAX_CUBES_PER_DRAW = 8;
+
+// Faces of cube render targets at least this large are copied to 2D textures and read with
+// texelFetch: in SwiftShader a cube lookup costs about 1.4× a 2D texelFetch, which at 256² pays
+// for six copies per probe and at 128² breaks even (docs/gpu-projection.md).
+const COPY_MIN_SIZE = 128;
+
+/** A cube map to project: a cube render target, or its texture. */
+type CubeSource = CubeTexture | WebGLCubeRenderTarget;
+
+function isCubeTarget( item: CubeSource ): item is WebGLCubeRenderTarget {
+
+	return ( item as { isWebGLCubeRenderTarget?: boolean } ).isWebGLCubeRenderTarget === true;
+
+}
 
 /**
  * Tiles per axis of a probe's grid of partial sums over a domain of `texels` per axis (a cube face
@@ -101,6 +115,9 @@ export class SHProjector {
 	// variant projects up to MAX_CUBES_PER_DRAW cube maps per draw.
 	private readonly cubeMaterials: RawShaderMaterial[];
 	private readonly cubeBatchMaterials: RawShaderMaterial[];
+	private readonly faceMaterials: RawShaderMaterial[];
+	// 2D copies of a large cube render target's faces (FramebufferTexture), made when first needed.
+	private readonly faces: FramebufferTexture[] = [];
 	private readonly equirectMaterials: RawShaderMaterial[];
 	private readonly reduceMaterials: RawShaderMaterial[];
 	private readonly gatherMaterial: RawShaderMaterial;
@@ -112,6 +129,7 @@ export class SHProjector {
 	private gatherTarget: WebGLRenderTarget | null = null;
 
 	private source: 'cube' | 'equirect' | null = null;
+	private size = 0;
 	private tiles = 1;
 	private capacity = 0;
 	private count = 0;
@@ -134,14 +152,17 @@ export class SHProjector {
 		for ( let first = 0; first < PLANES; first += perDraw ) this.groups.push( { first, count: Math.min( perDraw, PLANES - first ) } );
 
 		type Uniforms = Record<string, { value: unknown }>;
-		const material = ( fragmentShader: string, uniforms: Uniforms, group: PlaneGroup, sources = 1 ) => new RawShaderMaterial( {
-			glslVersion: GLSL3, vertexShader: fullscreenVert, fragmentShader, uniforms, depthTest: false, depthWrite: false,
-			defines: { PLANE_FIRST: group.first, PLANE_COUNT: group.count, SOURCES: sources },
+		type Defines = Record<string, number>;
+		const material = ( fragment: string, uniforms: Uniforms, group: PlaneGroup, defines: Defines = {} ) => new RawShaderMaterial( {
+			fragmentShader: fragment,
+			glslVersion: GLSL3, vertexShader: fullscreenVert, uniforms, depthTest: false, depthWrite: false,
+			defines: { PLANE_FIRST: group.first, PLANE_COUNT: group.count, SOURCES: 1, ...defines },
 		} );
 		const cube: Uniforms = {
 			solidAngles: { value: null }, size: { value: 0 }, block: { value: 1 }, rowOffset: { value: 0 }, tiles: { value: 1 },
 		};
 		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) cube[ `cubeMap${i}` ] = { value: null };
+		for ( let face = 0; face < 6; face ++ ) cube[ `face${face}` ] = { value: null };
 		const equirect = { panorama: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 } };
 		const reduce: Uniforms = { factor: { value: 4 } };
 		const gather: Uniforms = { factor: { value: 1 } };
@@ -153,7 +174,9 @@ export class SHProjector {
 		}
 
 		this.cubeMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group ) );
-		this.cubeBatchMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, MAX_CUBES_PER_DRAW ) );
+		const batch = { SOURCES: MAX_CUBES_PER_DRAW };
+		this.cubeBatchMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, batch ) );
+		this.faceMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, { FACES: 1 } ) );
 		this.equirectMaterials = this.groups.map( ( group ) => material( shProjectEquirectFrag, equirect, group ) );
 		this.reduceMaterials = this.groups.map( ( group ) => material( shReduceFrag, reduce, group ) );
 		this.gatherMaterial = material( shGatherFrag, gather, { first: 0, count: 1 } );
@@ -264,6 +287,7 @@ export class SHProjector {
 		assertInteger( 'SHProjector.begin', 'count', count, 1, Math.floor( MAX_ROWS / tiles ) );
 
 		this.source = source;
+		this.size = size;
 		this.tiles = tiles;
 		this.count = 0;
 		this.capacity = count;
@@ -288,21 +312,24 @@ export class SHProjector {
 	}
 
 	/**
-	 * Projects the next source of the batch, or the next few cube maps in one draw (an array of up
-	 * to {@link SHProjector.maxCubesPerDraw}, in order; for small faces this saves a draw, a
-	 * render pass and a texture barrier per probe). A cube texture must be the texture of a
-	 * `WebGLCubeRenderTarget` with `NearestFilter` (as {@link ProbeCapturer} makes it), so every
-	 * texel-centre lookup returns that texel; a panorama is any 2D texture, sampled texel by texel.
-	 * The draws are issued at once: the textures may be rendered into again right after.
+	 * Projects the next source of the batch, or the next few cube maps (an array of up to
+	 * {@link SHProjector.maxCubesPerDraw}, in order; small faces go in one draw, which saves a
+	 * draw, a render pass and a texture barrier per probe). A cube source is a
+	 * `WebGLCubeRenderTarget` with `NearestFilter` (as {@link ProbeCapturer} makes it), or its
+	 * texture; give the target where you have it: faces of 128² and more are then copied to 2D
+	 * textures, which software rasterisers read faster than a cube map. A panorama is any 2D
+	 * texture, sampled texel by texel. The draws are issued at once: the sources may be rendered
+	 * into again right after.
 	 */
-	add( texture: CubeTexture | Texture | readonly CubeTexture[] ): void {
+	add( source: CubeSource | Texture | readonly CubeSource[] ): void {
 
 		if ( this.source === null ) throw new Error( 'SHProjector.add: call begin() first.' );
-		const many = Array.isArray( texture );
-		const count = many ? ( texture as readonly CubeTexture[] ).length : 1;
-		if ( many && ( this.source !== 'cube' || count < 1 || count > MAX_CUBES_PER_DRAW ) ) {
+		const many = Array.isArray( source );
+		const list = many ? source as readonly CubeSource[] : null;
+		const count = list ? list.length : 1;
+		if ( list && ( this.source !== 'cube' || count < 1 || count > MAX_CUBES_PER_DRAW ) ) {
 
-			throw new RangeError( `SHProjector.add: an array of textures must hold 1..${MAX_CUBES_PER_DRAW} cube textures for a 'cube' batch, `
+			throw new RangeError( `SHProjector.add: an array must hold 1..${MAX_CUBES_PER_DRAW} cube render targets or textures for a 'cube' batch, `
 				+ `got ${count} for a '${this.source}' batch.` );
 
 		}
@@ -313,55 +340,127 @@ export class SHProjector {
 
 		}
 
-		for ( let i = 0; i < count; i ++ ) {
-
-			const item = many ? ( texture as readonly CubeTexture[] )[ i ] : texture;
-			const kind = item as { isTexture?: boolean; isCubeTexture?: boolean } | null;
-			if ( kind?.isTexture !== true || ( kind.isCubeTexture === true ) !== ( this.source === 'cube' ) ) {
-
-				throw new TypeError( `SHProjector.add: ${many ? `textures[ ${i} ]` : 'texture'} must be a three.js `
-					+ `${this.source === 'cube' ? 'CubeTexture (a WebGLCubeRenderTarget\'s)' : '2D Texture'} for a '${this.source}' batch, got ${describeValue( item )}.` );
-
-			}
-
-		}
+		for ( let i = 0; i < count; i ++ ) this.checkSource( list ? list[ i ] : source, list ? `sources[ ${i} ]` : 'source' );
 
 		if ( this.source === 'equirect' ) {
 
-			this.equirectMaterials[ 0 ].uniforms.panorama.value = texture;
+			this.equirectMaterials[ 0 ].uniforms.panorama.value = source;
 			this.drawSources( this.equirectMaterials, 1 );
+			return;
 
-		} else if ( ! many ) {
+		}
 
-			this.setCubes( texture as CubeTexture, 1 );
-			this.drawSources( this.cubeMaterials, 1 );
+		const items = list ?? [ source as CubeSource ];
+		if ( this.size >= COPY_MIN_SIZE || this.groups.length > 1 ) {
 
-		} else if ( this.groups.length > 1 ) {
+			// Large faces: one source per draw, render targets through 2D copies of their faces.
+			// Few draw buffers: several draws per source anyway, and one program of eight
+			// projections per plane group is not worth compiling.
+			for ( let i = 0; i < count; i ++ ) {
 
-			// Several draws per source anyway (few draw buffers): one source per draw, which spares
-			// compiling a program of eight projections per plane group.
-			for ( const cube of texture as readonly CubeTexture[] ) {
+				const item = items[ i ];
+				if ( this.size >= COPY_MIN_SIZE && isCubeTarget( item ) ) {
 
-				this.setCubes( cube, 1 );
-				this.drawSources( this.cubeMaterials, 1 );
+					this.copyFaces( item );
+					this.drawSources( this.faceMaterials, 1 );
+
+				} else {
+
+					this.setCubes( items, i, 1 );
+					this.drawSources( this.cubeMaterials, 1 );
+
+				}
 
 			}
 
-		} else {
+			return;
 
-			this.setCubes( texture as readonly CubeTexture[], count );
-			this.drawSources( count > 1 ? this.cubeBatchMaterials : this.cubeMaterials, count );
+		}
+
+		this.setCubes( items, 0, count );
+		this.drawSources( count > 1 ? this.cubeBatchMaterials : this.cubeMaterials, count );
+
+	}
+
+	/** Throws unless `item` is a source this batch takes. */
+	private checkSource( item: unknown, name: string ): void {
+
+		const kind = item as { isTexture?: boolean; isCubeTexture?: boolean; isWebGLCubeRenderTarget?: boolean; width?: number } | null;
+		if ( this.source === 'cube' && kind?.isWebGLCubeRenderTarget === true ) {
+
+			if ( kind.width !== this.size ) {
+
+				throw new RangeError( `SHProjector.add: ${name} is a ${kind.width}² cube render target; this batch began with size ${this.size}.` );
+
+			}
+
+			return;
+
+		}
+
+		if ( kind?.isTexture !== true || ( kind.isCubeTexture === true ) !== ( this.source === 'cube' ) ) {
+
+			throw new TypeError( `SHProjector.add: ${name} must be a three.js `
+				+ `${this.source === 'cube' ? 'WebGLCubeRenderTarget or its CubeTexture' : '2D Texture'} for a '${this.source}' batch, got ${describeValue( item )}.` );
 
 		}
 
 	}
 
-	/** Binds `count` cube maps to the sampler slots; unused slots hold null (three binds an empty cube map), not a stale texture. */
-	private setCubes( cubes: CubeTexture | readonly CubeTexture[], count: number ): void {
+	/**
+	 * Binds `count` cube maps of `items` from `first` to the sampler slots; unused slots hold null
+	 * (three binds an empty cube map), not a stale texture.
+	 */
+	private setCubes( items: readonly CubeSource[], first: number, count: number ): void {
 
 		const uniforms = this.cubeMaterials[ 0 ].uniforms;
-		const list = Array.isArray( cubes ) ? cubes as readonly CubeTexture[] : null;
-		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) uniforms[ `cubeMap${i}` ].value = i >= count ? null : list ? list[ i ] : cubes;
+		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) {
+
+			const item = i < count ? items[ first + i ] : null;
+			uniforms[ `cubeMap${i}` ].value = item === null ? null : isCubeTarget( item ) ? item.texture : item;
+
+		}
+
+	}
+
+	/** Copies the six faces of `target` to the 2D face textures the FACES program reads (made or remade to its size and type). */
+	private copyFaces( target: WebGLCubeRenderTarget ): void {
+
+		const type = target.texture.type;
+		if ( this.faces.length === 0 || this.faces[ 0 ].image.width !== target.width || this.faces[ 0 ].type !== type ) {
+
+			this.disposeFaces();
+			for ( let face = 0; face < 6; face ++ ) {
+
+				const texture = new FramebufferTexture( target.width, target.width );
+				texture.type = type;
+				this.faces.push( texture );
+
+			}
+
+			const uniforms = this.faceMaterials[ 0 ].uniforms;
+			this.faces.forEach( ( texture, face ) => { uniforms[ `face${face}` ].value = texture; } );
+
+		}
+
+		const renderer = this.renderer;
+		const previous = renderer.getRenderTarget();
+		const previousFace = renderer.getActiveCubeFace(), previousLevel = renderer.getActiveMipmapLevel();
+		for ( let face = 0; face < 6; face ++ ) {
+
+			renderer.setRenderTarget( target, face );
+			renderer.copyFramebufferToTexture( this.faces[ face ] );
+
+		}
+
+		renderer.setRenderTarget( previous, previousFace, previousLevel );
+
+	}
+
+	private disposeFaces(): void {
+
+		for ( const texture of this.faces ) texture.dispose();
+		this.faces.length = 0;
 
 	}
 
@@ -537,10 +636,12 @@ export class SHProjector {
 	dispose(): void {
 
 		this.disposeTargets();
+		this.disposeFaces();
 		for ( const texture of this.solidAngleTextures.values() ) texture.dispose();
 		this.solidAngleTextures.clear();
 		const materials = [
-			...this.cubeMaterials, ...this.cubeBatchMaterials, ...this.equirectMaterials, ...this.reduceMaterials, this.gatherMaterial,
+			...this.cubeMaterials, ...this.cubeBatchMaterials, ...this.faceMaterials, ...this.equirectMaterials,
+			...this.reduceMaterials, this.gatherMaterial,
 		];
 		for ( const material of materials ) material.dispose();
 		this.quad.geometry.dispose();

@@ -128,6 +128,8 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 			[ 100, 'exact', THREE.FloatType ], [ 128, 'exact', THREE.FloatType ], [ 37, 'exact', THREE.FloatType ],
 			[ 8, 'paper', THREE.FloatType ], [ 32, 'paper', THREE.FloatType ], [ 100, 'paper', THREE.FloatType ],
 			[ 32, 'exact', THREE.HalfFloatType ],
+			// From 128² on the faces are copied to 2D textures first (SHProjector.add of a render target).
+			[ 128, 'exact', THREE.HalfFloatType ], [ 131, 'exact', THREE.FloatType ], [ 256, 'paper', THREE.HalfFloatType ],
 		];
 
 		for ( const [ size, solidAngle, type ] of cases ) {
@@ -258,11 +260,12 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 
 	} );
 
-	it( 'SHProjector used directly: batches of different sizes and counts on one projector keep probes apart, added one by one and in arrays of up to 8 per draw', () => {
+	it( 'SHProjector used directly: batches of different sizes and counts on one projector keep probes apart, added one by one and in arrays of up to 8 textures or render targets', () => {
 
-		// begin/add/finish three times on one projector (targets reused or rebuilt in between), each
+		// begin/add/finish four times on one projector (targets reused or rebuilt in between), each
 		// source a cube map of constant colour (i + 1, 2(i + 1), 0.5): L00 = 4π·Y00·colour. The
-		// sources go in as single textures and as arrays of 1..8 (one draw each), in chunks whose
+		// sources go in as single textures and as arrays of 1..8 textures or render targets (one
+		// draw each where the faces are small), in chunks whose
 		// sizes do not divide the batch, so a wrong row offset or sampler slot gives a probe its
 		// neighbour's colour.
 		const projector = new SHProjector( renderer );
@@ -270,7 +273,7 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 		const scene = new THREE.Scene();
 		const results: Float32Array[] = [];
 		const chunks = [ 1, 3, 8, 0, 2, 5, 8, 7 ]; // 0: one single texture, not an array
-		for ( const [ size, count ] of [ [ 64, 5 ], [ 16, 40 ], [ 7, 23 ] ] ) {
+		for ( const [ size, count ] of [ [ 64, 5 ], [ 16, 40 ], [ 7, 23 ], [ 129, 6 ] ] ) {
 
 			projector.begin( 'cube', size, count );
 			const cubes: THREE.WebGLCubeRenderTarget[] = [];
@@ -288,7 +291,9 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 			for ( let i = 0, c = 0; i < count; c ++ ) {
 
 				const chunk = Math.min( chunks[ c % chunks.length ], count - i );
+				// Odd chunks as render targets (from 128² on their faces are copied to 2D textures).
 				if ( chunk === 0 ) projector.add( cubes[ i ++ ].texture );
+				else if ( c % 2 === 1 ) { projector.add( cubes.slice( i, i + chunk ) ); i += chunk; }
 				else { projector.add( cubes.slice( i, i + chunk ).map( ( cube ) => cube.texture ) ); i += chunk; }
 
 			}

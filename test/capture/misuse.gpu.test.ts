@@ -98,15 +98,18 @@ describe.skipIf( ! ctx.renderer )( `capture classes: misuse${ctx.skipReason ? ' 
 		const nearest = { minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter };
 		const cube = new THREE.WebGLCubeRenderTarget( 8, { type: THREE.HalfFloatType, ...nearest } );
 		projector.begin( 'cube', 8, 2 );
-		where( 'add', () => projector.add( null as never ), /texture must be a three\.js CubeTexture/ );
+		where( 'add', () => projector.add( null as never ), /source must be a three\.js WebGLCubeRenderTarget or its CubeTexture/ );
 		where( 'add', () => projector.add( new THREE.Texture() ), /for a 'cube' batch/ );
 		projector.add( cube.texture );
 		where( 'finish', () => projector.finish( 'x' as never ), /target must be a Float32Array/ );
 		where( 'finish', () => projector.finish( new Float32Array( 27 ), - 3 ), /offset must be an integer ≥ 0/ );
 		where( 'add', () => projector.add( [ cube.texture, cube.texture ] ), /the batch holds 2 sources, 1 added/ );
-		where( 'add', () => projector.add( [] ), /an array of textures must hold 1\.\.8 cube textures/ );
-		where( 'add', () => projector.add( new Array( 9 ).fill( cube.texture ) ), /must hold 1\.\.8 cube textures for a 'cube' batch, got 9/ );
-		where( 'add', () => projector.add( [ new THREE.Texture() as never ] ), /textures\[ 0 \] must be a three\.js CubeTexture/ );
+		where( 'add', () => projector.add( [] ), /an array must hold 1\.\.8 cube render targets or textures/ );
+		where( 'add', () => projector.add( new Array( 9 ).fill( cube.texture ) ), /must hold 1\.\.8 cube render targets or textures for a 'cube' batch, got 9/ );
+		where( 'add', () => projector.add( [ new THREE.Texture() as never ] ), /sources\[ 0 \] must be a three\.js WebGLCubeRenderTarget/ );
+		const other = new THREE.WebGLCubeRenderTarget( 16, { type: THREE.HalfFloatType, ...nearest } );
+		where( 'add', () => projector.add( other ), /source is a 16² cube render target; this batch began with size 8/ );
+		other.dispose();
 		projector.add( cube.texture ); // the batch still has its second slot
 		const out = projector.finish( new Float32Array( 54 ) );
 		expect( out.every( Number.isFinite ) ).toBe( true );
