@@ -16,10 +16,8 @@ const SEARCH_SCALE = 8;
 /**
  * Finds points that coincide within `tolerance × diagonal` of the set's bounding box. The first point
  * of each group is kept; a point within the tolerance of several kept points is merged into the one
- * met first scanning the 27 merge cells (the merge distance wide) around it in z, y, x order, each
- * cell's points from the last kept back, through a hash table of the cells — the order of the
- * original 27-cell scan, which the search below reproduces exactly while looking at a coarser grid
- * (why: docs/incremental-delaunay.md).
+ * a scan of the 27 hashed merge cells around it meets first (the order: docs/incremental-delaunay.md,
+ * "Duplicates").
  *
  * @param p Flat x, y, z coordinates, normalised (`normalizePoints`: squares neither over- nor underflow).
  * @param tolerance Merge distance as a fraction of the bounding-box diagonal.
