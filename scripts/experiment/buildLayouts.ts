@@ -205,13 +205,19 @@ export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): Eval
 	}
 
 	const maxCount = dense.positions.length / 3, perProbeMs = dense.ms / maxCount;
-	const extra = [ inputs.paper.gridProbes, ...inputs.equalStorage.flat() ];
 	for ( const { method, swaps } of FITTED_METHODS ) {
 
 		for ( const gradients of [ false, true ] ) {
 
+			// The best method also at the grid's count, and for equal storage: N gradient probes, 4N plain ones.
 			const counts = new Set( inputs.fitCounts );
-			if ( method === BEST_METHOD ) for ( const n of extra ) counts.add( n );
+			if ( method === BEST_METHOD ) {
+
+				counts.add( inputs.paper.gridProbes );
+				for ( const [ n, fourN ] of inputs.equalStorage ) counts.add( gradients ? n : fourN );
+
+			}
+
 			for ( const count of [ ...counts ].filter( ( n ) => n >= 4 && n <= maxCount ).sort( ( a, b ) => a - b ) ) {
 
 				layouts.push( placed( inputs, samples, perProbeMs, count, method, swaps, gradients, null ) );

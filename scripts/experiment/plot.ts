@@ -10,7 +10,7 @@ export interface PlotOptions { title: string; width?: number; height?: number }
 
 const COLORS = {
 	grid: '#d62728', gridTet: '#ff7f0e', gridFit: '#e377c2', auto: '#1f77b4', greedy: '#9467bd', greedyFit: '#17becf', swaps: '#555500',
-	hand: '#2ca02c', dense: '#8c564b', paper: '#000000', guide: '#777777',
+	hand: '#2ca02c', handFit: '#98df8a', dense: '#8c564b', paper: '#000000', guide: '#777777',
 };
 
 /** One curve: its rows, colour, marker, and whether it is a gradient curve (dashed line, open marker). */
@@ -55,8 +55,8 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		[ 'automatic: greedy-fit', COLORS.greedyFit, 'circle', 'solid' ],
 		[ 'automatic: greedy-fit + swaps', COLORS.swaps, 'circle', 'solid' ],
 		[ 'dashed, open: + gradients', '#444444', 'open-circle', 'dashed' ],
-		[ 'hand-made (filled: captured)', COLORS.hand, 'triangle', 'none' ],
-		[ 'hand-made, fitted (+ gradients)', COLORS.hand, 'open-triangle', 'none' ],
+		[ 'hand-made: captured, fitted', COLORS.hand, 'triangle-pair', 'none' ],
+		[ 'hand-made, fitted + gradients', COLORS.hand, 'open-triangle', 'none' ],
 		[ 'all dense candidates', COLORS.dense, 'cross', 'none' ],
 		[ "paper's grid", COLORS.paper, 'ring', 'none' ],
 	];
@@ -64,7 +64,8 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 
 		const lx = left + ( i % 4 ) * ( ( width - left - right ) / 4 ), ly = 52 + 22 * Math.floor( i / 4 );
 		if ( line !== 'none' ) out.push( `<line x1="${lx}" y1="${ly}" x2="${lx + 30}" y2="${ly}" stroke="${color}" stroke-width="2.5"${line === 'dashed' ? ' stroke-dasharray="6 4"' : ''}/>` );
-		out.push( marker( shape, lx + 15, ly, color ) );
+		if ( shape === 'triangle-pair' ) out.push( marker( 'triangle', lx + 7, ly, COLORS.hand ), marker( 'triangle', lx + 23, ly, COLORS.handFit ) );
+		else out.push( marker( shape, lx + 15, ly, color ) );
 		out.push( `<text x="${lx + 38}" y="${ly + 5}" font-size="14">${escape( label )}</text>` );
 
 	} );
@@ -128,7 +129,8 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 		if ( gridRow ) {
 
 			out.push( `<line x1="${x0}" y1="${sy( gridRow[ key ] )}" x2="${x0 + panelWidth}" y2="${sy( gridRow[ key ] )}" stroke="${COLORS.guide}" stroke-width="1.5" stroke-dasharray="2 3"/>` );
-			out.push( `<text x="${x0 + 5}" y="${sy( gridRow[ key ] ) - 6}" font-size="12" fill="#444">paper's grid ${result.paper.gridCounts.join( 'x' )}: ${formatPercent( gridRow[ key ] )}</text>` );
+			// Named in the top right corner, which the falling curves leave free.
+			out.push( `<text x="${x0 + panelWidth - 6}" y="${y0 + 34}" font-size="12" fill="#444" text-anchor="end">dotted: paper's grid ${result.paper.gridCounts.join( 'x' )}: ${formatPercent( gridRow[ key ] )}</text>` );
 
 		}
 
@@ -143,7 +145,8 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 
 		for ( const row of layouts.filter( ( r ) => r.kind === 'hand' ) ) {
 
-			out.push( marker( row.fitted ? 'open-triangle' : 'triangle', sx( row.probes ), sy( row[ key ] ), COLORS.hand ) );
+			const shape = row.gradients ? 'open-triangle' : 'triangle';
+			out.push( marker( shape, sx( row.probes ), sy( row[ key ] ), row.fitted && ! row.gradients ? COLORS.handFit : COLORS.hand ) );
 			if ( ! row.fitted ) out.push( `<text x="${sx( row.probes ) - 10}" y="${sy( row[ key ] ) - 14}" font-size="12" fill="${COLORS.hand}" text-anchor="end">hand ${row.probes}</text>` );
 
 		}
@@ -163,7 +166,7 @@ export function plotSVG( result: Pick<ExperimentResult, 'layouts' | 'paper' | 'v
 			if ( ! row ) return;
 			const color = colorOf( row );
 			out.push( `<circle cx="${sx( row.probes ).toFixed( 1 )}" cy="${sy( row[ key ] ).toFixed( 1 )}" r="11" fill="none" stroke="${color}" stroke-width="2"/>` );
-			out.push( `<text x="${sx( row.probes ) + 12}" y="${sy( row[ key ] ) + ( m === 0 ? 28 : - 14 )}" font-size="12" fill="${color}">${escape( text )}: ${row.probes}</text>` );
+			out.push( `<text x="${sx( row.probes ) + 14}" y="${sy( row[ key ] ) + ( m === 0 ? - 10 : 26 )}" font-size="12" fill="${color}">${escape( text )}: ${row.probes}</text>` );
 
 		} );
 

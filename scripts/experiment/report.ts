@@ -130,16 +130,21 @@ export function fittedTable( layouts: readonly LayoutResult[] ): string {
 
 }
 
-/** The targets on every ground truth: one row per target, one column per seed. */
-export function targetTable( seeds: readonly SeedCheck[] ): string {
+/**
+ * The targets on every ground truth: one row per target, one column per seed; first the captured
+ * paper's grid (`gridName`) for reference.
+ */
+export function targetTable( seeds: readonly SeedCheck[], gridName: string ): string {
 
 	const lines = [
 		`| target | layout judged (seed ${seeds[ 0 ].seed}) | ${seeds.map( ( s ) => `seed ${s.seed}` ).join( ' | ' )} | best candidate on the truth (seed ${seeds[ 0 ].seed}) |`,
 		`|---|---|${seeds.map( () => '--:|' ).join( '' )}---|`,
+		`| (reference: the captured paper's grid) | ${gridName} | ${seeds.map( ( s ) => s.meanError[ gridName ] !== undefined ? pct( s.meanError[ gridName ] ) : '–' ).join( ' | ' )} | |`,
 	];
 	seeds[ 0 ].targets.forEach( ( target, t ) => {
 
-		const format = ( check: TargetCheck ) => check.value === null ? '–' : `${target.id === 'grid-count' ? `${check.value.toFixed( 2 )}×` : pct( check.value )} ${check.holds ? '✓' : '✗'}`;
+		const format = ( check: TargetCheck ) => check.value === null ? '–' :
+			`${target.id === 'grid-count' ? `${check.value.toFixed( 2 )}×` : pct( check.value )} ${check.holds ? '✓' : '✗'}`;
 		const best = target.bestOnTruth ? `${target.bestOnTruth.layout}: ${target.id === 'grid-count' ? `${target.bestOnTruth.value.toFixed( 2 )}×` : pct( target.bestOnTruth.value )}` : '–';
 		lines.push( `| ${target.text} | ${target.layout ?? 'none measured'} | ${seeds.map( ( s ) => format( s.targets[ t ] ) ).join( ' | ' )} | ${best} |` );
 
@@ -191,7 +196,7 @@ export function markdownReport( result: ExperimentResult, plotFile: string ): st
 
 	lines.push( '## Fitted probes: issue 14\'s targets', '' );
 	lines.push( `The layout a target judges is chosen without the ground truth: of the candidates at the largest count allowed, the one with the lowest cross-validation error of its fit (else its error over the fit samples). ✓: the target holds on that ground truth. The same layouts are judged on ${result.seeds.length} ground truths (seeds ${result.seeds.map( ( s ) => s.seed ).join( ', ' )}, ${result.samples} points each).`, '' );
-	lines.push( targetTable( result.seeds ), '' );
+	lines.push( targetTable( result.seeds, paperGrid?.name ?? '' ), '' );
 	lines.push( '### Equal storage', '', 'A gradient probe stores 108 floats (27 SH + 81 gradient), a plain one 27: gradient layouts of N probes against plain fitted layouts of 4N.', '' );
 	lines.push( equalStorageTable( result.equalStorage, result.seeds ), '' );
 	lines.push( '### Where characters go', '' );
