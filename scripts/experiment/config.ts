@@ -41,7 +41,8 @@ export interface SceneConfig {
 
 	/**
 	 * Extra fit points (`--fit-points` default): captured in open space besides the dense set, for
-	 * the fits where the dense candidates are too sparse to fit to.
+	 * the fits where the dense candidates are too sparse to fit to (how the counts were chosen:
+	 * README, "The paper's claim, measured").
 	 */
 	fitPoints: number;
 
