@@ -10,7 +10,7 @@
  *   node --import tsx bench/captureShadowsDecompose.ts [basic] [sponza]
  */
 
-import { readdirSync, readFileSync } from 'node:fs';
+import { cpuByType } from './cpuSnapshot.js';
 import { fileURLToPath } from 'node:url';
 import { launchChromium } from '../cli/chromium.js';
 import { libraryAliases } from '../cli/libraryAliases.js';
@@ -23,47 +23,6 @@ type Mode = 'none' | 'once' | 'frozen';
 
 const BENCH_DIR = fileURLToPath( new URL( '.', import.meta.url ) );
 const MODES: Mode[] = [ 'none', 'once', 'frozen' ];
-
-/** CPU seconds of the Chromium tree's GPU process and of its renderer process(es), from /proc. */
-function cpuByType( root: number ): { gpu: number, renderer: number, other: number } {
-
-	const parents = new Map<number, number>(), times = new Map<number, number>(), types = new Map<number, string>();
-	for ( const entry of readdirSync( '/proc' ) ) {
-
-		if ( ! /^\d+$/.test( entry ) ) continue;
-		try {
-
-			const stat = readFileSync( `/proc/${entry}/stat`, 'utf8' );
-			const rest = stat.slice( stat.lastIndexOf( ')' ) + 2 ).split( ' ' );
-			parents.set( Number( entry ), Number( rest[ 1 ] ) );
-			times.set( Number( entry ), ( Number( rest[ 11 ] ) + Number( rest[ 12 ] ) ) / 100 );
-			const type = /--type=([a-z-]+)/.exec( readFileSync( `/proc/${entry}/cmdline`, 'utf8' ) );
-			types.set( Number( entry ), type ? type[ 1 ] : 'browser' );
-
-		} catch { /* exited */ }
-
-	}
-
-	const tree = new Set<number>( [ root ] );
-	for ( let grown = true; grown; ) {
-
-		grown = false;
-		for ( const [ pid, parent ] of parents ) if ( ! tree.has( pid ) && tree.has( parent ) ) { tree.add( pid ); grown = true; }
-
-	}
-
-	const result = { gpu: 0, renderer: 0, other: 0 };
-	for ( const pid of tree ) {
-
-		const type = types.get( pid );
-		const key = type === 'gpu-process' ? 'gpu' : type === 'renderer' ? 'renderer' : 'other';
-		result[ key ] += times.get( pid ) ?? 0;
-
-	}
-
-	return result;
-
-}
 
 async function call<K extends keyof CaptureShadowsBenchApi>(
 	page: Page, name: K, ...args: Parameters<CaptureShadowsBenchApi[ K ]>

@@ -43,3 +43,44 @@ export function cpuSnapshot( browserPid: number | null ): { busy: number, ours: 
 	}
 
 }
+
+/** CPU seconds of the Chromium tree under `root`: its GPU process, its renderer process(es) and the rest, from /proc. */
+export function cpuByType( root: number ): { gpu: number, renderer: number, other: number } {
+
+	const parents = new Map<number, number>(), times = new Map<number, number>(), types = new Map<number, string>();
+	for ( const entry of readdirSync( '/proc' ) ) {
+
+		if ( ! /^\d+$/.test( entry ) ) continue;
+		try {
+
+			const stat = readFileSync( `/proc/${entry}/stat`, 'utf8' );
+			const rest = stat.slice( stat.lastIndexOf( ')' ) + 2 ).split( ' ' );
+			parents.set( Number( entry ), Number( rest[ 1 ] ) );
+			times.set( Number( entry ), ( Number( rest[ 11 ] ) + Number( rest[ 12 ] ) ) / 100 );
+			const type = /--type=([a-z-]+)/.exec( readFileSync( `/proc/${entry}/cmdline`, 'utf8' ) );
+			types.set( Number( entry ), type ? type[ 1 ] : 'browser' );
+
+		} catch { /* exited */ }
+
+	}
+
+	const tree = new Set<number>( [ root ] );
+	for ( let grown = true; grown; ) {
+
+		grown = false;
+		for ( const [ pid, parent ] of parents ) if ( ! tree.has( pid ) && tree.has( parent ) ) { tree.add( pid ); grown = true; }
+
+	}
+
+	const result = { gpu: 0, renderer: 0, other: 0 };
+	for ( const pid of tree ) {
+
+		const type = types.get( pid );
+		const key = type === 'gpu-process' ? 'gpu' : type === 'renderer' ? 'renderer' : 'other';
+		result[ key ] += times.get( pid ) ?? 0;
+
+	}
+
+	return result;
+
+}

@@ -11,7 +11,7 @@
  *   node --import tsx bench/framesDecompose.ts [--variants=global,ours,oursVertex,…] [--rounds=6] [--frames=15] [--cpu]
  */
 
-import { readdirSync, readFileSync } from 'node:fs';
+import { cpuByType } from './cpuSnapshot.js';
 import { fileURLToPath } from 'node:url';
 import { launchChromium } from '../cli/chromium.js';
 import { libraryAliases } from '../cli/libraryAliases.js';
@@ -57,47 +57,6 @@ function parseVariant( name: string ): FrameVariant {
 	if ( base !== 'ours' && base !== 'oursVertex' && base !== 'oursFrozen' ) throw new Error( `framesDecompose: unknown variant ${name}` );
 	if ( fn !== undefined && FUNCTIONS[ fn ] === undefined ) throw new Error( `framesDecompose: unknown function ${fn}; known: ${Object.keys( FUNCTIONS ).join( ', ' )}` );
 	return { name, probe: 'ours', perVertex: base === 'oursVertex', noUpdate: base === 'oursFrozen', fragment: fn === undefined ? undefined : FUNCTIONS[ fn ] };
-
-}
-
-/** CPU seconds of the Chromium tree's GPU process and renderer process(es), from /proc. */
-function cpuByType( root: number ): { gpu: number, renderer: number } {
-
-	const parents = new Map<number, number>(), times = new Map<number, number>(), types = new Map<number, string>();
-	for ( const entry of readdirSync( '/proc' ) ) {
-
-		if ( ! /^\d+$/.test( entry ) ) continue;
-		try {
-
-			const stat = readFileSync( `/proc/${entry}/stat`, 'utf8' );
-			const rest = stat.slice( stat.lastIndexOf( ')' ) + 2 ).split( ' ' );
-			parents.set( Number( entry ), Number( rest[ 1 ] ) );
-			times.set( Number( entry ), ( Number( rest[ 11 ] ) + Number( rest[ 12 ] ) ) / 100 );
-			const type = /--type=([a-z-]+)/.exec( readFileSync( `/proc/${entry}/cmdline`, 'utf8' ) );
-			types.set( Number( entry ), type ? type[ 1 ] : 'browser' );
-
-		} catch { /* exited */ }
-
-	}
-
-	const tree = new Set<number>( [ root ] );
-	for ( let grown = true; grown; ) {
-
-		grown = false;
-		for ( const [ pid, parent ] of parents ) if ( ! tree.has( pid ) && tree.has( parent ) ) { tree.add( pid ); grown = true; }
-
-	}
-
-	const result = { gpu: 0, renderer: 0 };
-	for ( const pid of tree ) {
-
-		const type = types.get( pid );
-		if ( type === 'gpu-process' ) result.gpu += times.get( pid ) ?? 0;
-		if ( type === 'renderer' ) result.renderer += times.get( pid ) ?? 0;
-
-	}
-
-	return result;
 
 }
 
