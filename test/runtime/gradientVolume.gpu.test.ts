@@ -15,7 +15,8 @@ import { afterAll, describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/runtime/LightProbeVolume.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
-import { compareImages, projectToImage, renderToImage, type Image8 } from '../helpers/gpuScenes.js';
+import { FLOOR_POINTS, floorMesh, floorPixel, topCamera } from '../helpers/floorScene.js';
+import { compareImages, renderToImage, type Image8 } from '../helpers/gpuScenes.js';
 
 const SIZE = 64;
 const ctx = await createHeadlessRenderer( SIZE, SIZE );
@@ -54,35 +55,6 @@ function fieldVolume( gradients: boolean ): LightProbeVolume {
 
 }
 
-function floorMesh( segments = 4 ): THREE.Mesh {
-
-	const geometry = new THREE.PlaneGeometry( 20, 20, segments, segments ).rotateX( - Math.PI / 2 );
-	return new THREE.Mesh( geometry, new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
-
-}
-
-function topCamera(): THREE.OrthographicCamera {
-
-	const camera = new THREE.OrthographicCamera( - 10, 10, 10, - 10, 0.1, 50 );
-	camera.position.set( 0, 20, 0 );
-	camera.up.set( 0, 0, - 1 );
-	camera.lookAt( 0, 0, 0 );
-	camera.updateMatrixWorld();
-	return camera;
-
-}
-
-/** Sample points across the floor, inside pixels (not on an edge). */
-const POINTS = [ [ - 8, - 8 ], [ 8, - 8 ], [ - 8, 8 ], [ 8, 8 ], [ 0, 0 ], [ - 4.3, 6.1 ], [ 5.7, - 2.2 ] ];
-
-function pixel( image: Image8, camera: THREE.Camera, x: number, z: number ): number[] {
-
-	const [ u, v ] = projectToImage( new THREE.Vector3( x, 0, z ), camera, image.width, image.height );
-	const p = Math.floor( v ) * image.width + Math.floor( u );
-	return [ image.data[ 4 * p ], image.data[ 4 * p + 1 ], image.data[ 4 * p + 2 ] ];
-
-}
-
 describe.skipIf( ! ctx.renderer )( `gradient probes on a real GL context (headless-gl)${SKIPPED}`, () => {
 
 	const renderer = ctx.renderer as THREE.WebGLRenderer;
@@ -106,18 +78,18 @@ describe.skipIf( ! ctx.renderer )( `gradient probes on a real GL context (headle
 		const image = render( floor, new THREE.LightProbe( new THREE.SphericalHarmonics3().fromArray( fieldSH( x, 0, z ) ) ) );
 		floor.geometry.dispose();
 		( floor.material as THREE.Material ).dispose();
-		return pixel( image, camera, x, z );
+		return floorPixel( image, camera, x, z );
 
 	}
 
-	const references = POINTS.map( ( [ x, z ] ) => expected( x, z ) );
+	const references = FLOOR_POINTS.map( ( [ x, z ] ) => expected( x, z ) );
 
 	function worstAgainstReference( image: Image8 ): number {
 
 		let worst = 0;
-		POINTS.forEach( ( [ x, z ], i ) => {
+		FLOOR_POINTS.forEach( ( [ x, z ], i ) => {
 
-			const actual = pixel( image, camera, x, z );
+			const actual = floorPixel( image, camera, x, z );
 			for ( let c = 0; c < 3; c ++ ) worst = Math.max( worst, Math.abs( actual[ c ] - references[ i ][ c ] ) );
 
 		} );
@@ -127,7 +99,7 @@ describe.skipIf( ! ctx.renderer )( `gradient probes on a real GL context (headle
 
 	it( 'the references differ across the floor by > 30/255 in red and blue (the field is a real gradient)', () => {
 
-		const at = ( x: number, z: number ) => references[ POINTS.findIndex( ( p ) => p[ 0 ] === x && p[ 1 ] === z ) ];
+		const at = ( x: number, z: number ) => references[ FLOOR_POINTS.findIndex( ( p ) => p[ 0 ] === x && p[ 1 ] === z ) ];
 		expect( at( 8, - 8 )[ 0 ] - at( - 8, - 8 )[ 0 ] ).toBeGreaterThan( 30 );
 		expect( at( - 8, 8 )[ 2 ] - at( - 8, - 8 )[ 2 ] ).toBeGreaterThan( 30 );
 
@@ -141,7 +113,7 @@ describe.skipIf( ! ctx.renderer )( `gradient probes on a real GL context (headle
 			for ( const gradients of [ true, false ] ) {
 
 				const volume = fieldVolume( gradients );
-				const floor = floorMesh();
+				const floor = floorMesh( 4 );
 				volume.add( floor, { mode } );
 				volume.update();
 				errors.push( worstAgainstReference( render( floor ) ) );

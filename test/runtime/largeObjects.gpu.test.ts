@@ -20,7 +20,8 @@ import { ProbeTextureLighting } from '../../src/runtime/ProbeTextureLighting.js'
 import { ProbeVolumeTexture } from '../../src/runtime/ProbeVolumeTexture.js';
 import { toLightProbeGrid } from '../../src/runtime/toLightProbeGrid.js';
 import { createHeadlessRenderer } from '../helpers/headlessGL.js';
-import { OUTPUT_DIR, compareImages, projectToImage, renderToImage, writePNG, type Image8 } from '../helpers/gpuScenes.js';
+import { FLOOR_POINTS, floorMesh, floorPixel, topCamera } from '../helpers/floorScene.js';
+import { OUTPUT_DIR, compareImages, renderToImage, writePNG, type Image8 } from '../helpers/gpuScenes.js';
 
 const SIZE = 64;
 const ctx = await createHeadlessRenderer( SIZE, SIZE );
@@ -50,36 +51,6 @@ function fieldVolume(): LightProbeVolume {
 
 }
 
-/** The floor, [−10, 10]² at y = 0, facing up; two triangles unless `segments` says otherwise. */
-function floorMesh( segments = 1 ): THREE.Mesh {
-
-	const geometry = new THREE.PlaneGeometry( 20, 20, segments, segments ).rotateX( - Math.PI / 2 );
-	return new THREE.Mesh( geometry, new THREE.MeshStandardMaterial( { color: 0xffffff, roughness: 1, metalness: 0 } ) );
-
-}
-
-function topCamera(): THREE.OrthographicCamera {
-
-	const camera = new THREE.OrthographicCamera( - 10, 10, 10, - 10, 0.1, 50 );
-	camera.position.set( 0, 20, 0 );
-	camera.up.set( 0, 0, - 1 );
-	camera.lookAt( 0, 0, 0 );
-	camera.updateMatrixWorld();
-	return camera;
-
-}
-
-/** Sample points across the floor, inside its pixels (not on an edge). */
-const POINTS = [ [ - 8, - 8 ], [ 8, - 8 ], [ - 8, 8 ], [ 8, 8 ], [ 0, 0 ], [ - 4.3, 6.1 ], [ 5.7, - 2.2 ] ];
-
-function pixel( image: Image8, camera: THREE.Camera, x: number, z: number ): number[] {
-
-	const [ u, v ] = projectToImage( new THREE.Vector3( x, 0, z ), camera, image.width, image.height );
-	const p = Math.floor( v ) * image.width + Math.floor( u );
-	return [ image.data[ 4 * p ], image.data[ 4 * p + 1 ], image.data[ 4 * p + 2 ] ];
-
-}
-
 describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless-gl)${SKIPPED}`, () => {
 
 	const renderer = ctx.renderer as THREE.WebGLRenderer;
@@ -98,7 +69,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 			const scene = new THREE.Scene();
 			const floor = floorMesh();
 			scene.add( floor, new THREE.LightProbe( new THREE.SphericalHarmonics3().fromArray( fieldSH( x, z ) ) ) );
-			reference.set( key, pixel( renderToImage( renderer, gl, scene, camera ), camera, x, z ) );
+			reference.set( key, floorPixel( renderToImage( renderer, gl, scene, camera ), camera, x, z ) );
 			floor.geometry.dispose();
 			( floor.material as THREE.Material ).dispose();
 
@@ -117,13 +88,13 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 
 	}
 
-	/** Largest channel difference between the image and the LightProbe references at POINTS. */
+	/** Largest channel difference between the image and the LightProbe references at FLOOR_POINTS. */
 	function worstAgainstReference( image: Image8 ): number {
 
 		let worst = 0;
-		for ( const [ x, z ] of POINTS ) {
+		for ( const [ x, z ] of FLOOR_POINTS ) {
 
-			const actual = pixel( image, camera, x, z ), want = expected( x, z );
+			const actual = floorPixel( image, camera, x, z ), want = expected( x, z );
 			for ( let c = 0; c < 3; c ++ ) worst = Math.max( worst, Math.abs( actual[ c ] - want[ c ] ) );
 
 		}
@@ -145,7 +116,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 		const floor = floorMesh();
 		volume.add( floor );
 		const image = render( floor );
-		const colours = POINTS.map( ( [ x, z ] ) => pixel( image, camera, x, z ) );
+		const colours = FLOOR_POINTS.map( ( [ x, z ] ) => floorPixel( image, camera, x, z ) );
 		for ( const colour of colours ) for ( let c = 0; c < 3; c ++ ) expect( Math.abs( colour[ c ] - colours[ 0 ][ c ] ) ).toBeLessThanOrEqual( 1 );
 		expect( worstAgainstReference( image ) ).toBeGreaterThan( 20 );
 		volume.dispose();
@@ -186,7 +157,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 			floor.updateMatrixWorld();
 			volume.update();
 			const moved = render( floor );
-			const want = expected( 5, 0 ), got = pixel( moved, camera, 5, 0 );
+			const want = expected( 5, 0 ), got = floorPixel( moved, camera, 5, 0 );
 			for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ) ).toBeLessThanOrEqual( 2 );
 			volume.remove( floor );
 			expect( floor.material ).toBe( material );
@@ -235,7 +206,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 		floor.position.x = 2;
 		lighting.update();
 		const moved = render( floor );
-		const want = expected( 5.7, - 2.2 ), got = pixel( moved, camera, 5.7, - 2.2 );
+		const want = expected( 5.7, - 2.2 ), got = floorPixel( moved, camera, 5.7, - 2.2 );
 		for ( let c = 0; c < 3; c ++ ) expect( Math.abs( got[ c ] - want[ c ] ) ).toBeLessThanOrEqual( 2 );
 		lighting.dispose();
 
@@ -291,7 +262,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 		const volume = new LightProbeVolume( { positions, sh } );
 		volume.add( reference );
 		volume.update();
-		const want = pixel( render( reference ), camera, 0, 0 );
+		const want = floorPixel( render( reference ), camera, 0, 0 );
 		volume.remove( reference );
 		expect( Math.max( ...want ) ).toBeGreaterThan( 40 );
 		for ( const mode of [ 'vertex', 'texture' ] as const ) {
@@ -300,7 +271,7 @@ describe.skipIf( ! ctx.renderer )( `large objects on a real GL context (headless
 			( floor.geometry.getAttribute( 'normal' ).array as Float32Array ).fill( 0 );
 			volume.add( floor, { mode, vertexOutput: 'sh' } );
 			volume.update();
-			const got = pixel( render( floor ), camera, 0, 0 );
+			const got = floorPixel( render( floor ), camera, 0, 0 );
 			// Measured (with the guard in the object mode too, since removed): 152/168/182 against
 			// 156/173/188, and black (0/0/0) without it. The few percent left are three's own
 			// normal-dependent terms (its energy compensation uses dot( normal, view ), here NaN).
