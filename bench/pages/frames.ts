@@ -11,40 +11,9 @@
 
 import * as THREE from 'three';
 import { LightProbeVolume } from '../../src/index.js';
+import { FAR, HEIGHT, NEAR, ROOM_MIN, WIDTH, createBenchRoom } from './benchRoom.js';
 
-const WIDTH = 1280, HEIGHT = 720;
-const ROOM_MIN = [ - 2, 0, - 2 ], ROOM_MAX = [ 2, 3, 2 ];
-const NEAR = 0.05, FAR = 20;
-
-const renderer = new THREE.WebGLRenderer( { antialias: false, powerPreference: 'high-performance' } );
-renderer.setPixelRatio( 1 );
-renderer.setSize( WIDTH, HEIGHT );
-document.body.appendChild( renderer.domElement );
-const gl = renderer.getContext() as WebGL2RenderingContext;
-
-const scene = new THREE.Scene();
-const camera = new THREE.PerspectiveCamera( 75, WIDTH / HEIGHT, 0.05, 50 );
-camera.position.set( 0, 1.5, 1.9 );
-camera.lookAt( 0, 1.3, - 2 );
-
-const size = new THREE.Vector3().fromArray( ROOM_MAX ).sub( new THREE.Vector3().fromArray( ROOM_MIN ) );
-const WALL_COLORS = [ 0x20c020, 0xc02020, 0xffffff, 0xffffff, 0xffffff, 0x2020c0 ];
-const litWalls = WALL_COLORS.map( ( color ) => new THREE.MeshStandardMaterial( {
-	color, roughness: 1, metalness: 0, side: THREE.BackSide,
-} ) );
-const unlitWalls = WALL_COLORS.map( ( color ) => new THREE.MeshBasicMaterial( {
-	color: new THREE.Color( color ).multiplyScalar( 0.5 ), side: THREE.BackSide,
-} ) );
-const room = new THREE.Mesh<THREE.BoxGeometry, THREE.Material[]>( new THREE.BoxGeometry( size.x, size.y, size.z ), litWalls );
-room.position.set( 0, ( ROOM_MIN[ 1 ] + ROOM_MAX[ 1 ] ) / 2, 0 );
-scene.add( room );
-const lamp = new THREE.Mesh( new THREE.PlaneGeometry( 1, 1 ), new THREE.MeshBasicMaterial( { color: 0xffffff } ) );
-lamp.rotation.x = Math.PI / 2;
-lamp.position.set( 0, ROOM_MAX[ 1 ] - 0.01, 0 );
-scene.add( lamp );
-const light = new THREE.PointLight( 0xffffff, 12, 0, 2 );
-light.position.set( 0, ROOM_MAX[ 1 ] - 0.3, 0 );
-scene.add( light );
+const { renderer, gl, scene, camera, size, unlitWalls, room, lamp, light } = createBenchRoom();
 
 // The capture bench's probes: LightProbeGridWebGL's 4 × 4 × 4 cell centres over the room.
 const positions = new Float64Array( 3 * 64 );
