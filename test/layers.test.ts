@@ -24,10 +24,12 @@ const ALLOWED: Record<string, readonly string[]> = {
 	capture: [ 'sh', 'root' ],
 	runtime: [ 'capture', 'io', 'placement', 'fitting', 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
 	gltf: [ 'io', 'root' ],
+	// WebGPURenderer glue (three/webgpu, three/tsl), on top: the WebGL core reaches it only through hooks it installs.
+	webgpu: [ 'runtime', 'capture', 'io', 'placement', 'fitting', 'interpolation', 'tetrahedra', 'geometry', 'sh', 'root' ],
 };
 
 /** The package entries: they only re-export, so they may import any layer. */
-const ENTRIES = [ 'index.ts', 'math.ts', 'format.ts', 'capture.ts', 'lightProbeGrid.ts' ];
+const ENTRIES = [ 'index.ts', 'math.ts', 'format.ts', 'capture.ts', 'lightProbeGrid.ts', 'webgpu.ts' ];
 
 /** Folders that must not load three.js, and the three.js glue files allowed inside them. */
 const PURE = [ 'root', 'geometry', 'sh', 'tetrahedra', 'interpolation', 'fitting', 'io', 'placement' ];
@@ -166,6 +168,15 @@ describe( 'layers of src/', () => {
 
 		const gltf = files.filter( ( file ) => layerOf( file ) === 'gltf' );
 		expect( gltf.some( ( file ) => importsOf( file, false ).some( ( i ) => i.startsWith( 'three/' ) ) ) ).toBe( true );
+
+	} );
+
+	it( 'three\'s node system (three/webgpu, three/tsl) is loaded only by src/webgpu and its entry, never by the main entry', () => {
+
+		const loadsNodes = ( file: string ): boolean => [ ...runtimeClosure( file ) ].some( ( i ) => i === 'three/webgpu' || i === 'three/tsl' );
+		const outside = files.filter( ( file ) => layerOf( file ) !== 'webgpu' && layerOf( file ) !== 'entry' && importsOf( file, false ).some( ( i ) => i === 'three/webgpu' || i === 'three/tsl' ) );
+		expect( outside.map( ( file ) => relative( SOURCE, file ) ) ).toEqual( [] );
+		for ( const entry of ENTRIES.filter( ( name ) => name !== 'webgpu.ts' ) ) expect( loadsNodes( resolve( SOURCE, entry ) ), entry ).toBe( false );
 
 	} );
 
