@@ -35,7 +35,15 @@ export interface BrowserSession {
 
 }
 
-export async function startBrowser(): Promise<BrowserSession> {
+/** Options of {@link startBrowser}. */
+export interface StartBrowserOptions {
+
+	/** Launch Chromium with WebGPU enabled (SwiftShader's adapter; pages are served from 127.0.0.1, a secure context). Default false. */
+	webgpu?: boolean;
+
+}
+
+export async function startBrowser( options: StartBrowserOptions = {} ): Promise<BrowserSession> {
 
 	const { createServer } = await import( 'vite' );
 	const server = await createServer( {
@@ -53,7 +61,7 @@ export async function startBrowser(): Promise<BrowserSession> {
 	await server.listen();
 	const baseUrl = server.resolvedUrls!.local[ 0 ];
 
-	const browser = await launchChromium( { browser: CHROMIUM } );
+	const browser = await launchChromium( { browser: CHROMIUM, webgpu: options.webgpu === true } );
 
 	return {
 		browser, server, baseUrl,
