@@ -1,5 +1,6 @@
 import { TriangleBVH } from '../geometry/TriangleBVH.js';
 import { assertOptionalNumber, assertPoints } from '../validate.js';
+import { blockedLatticeEdges } from './blockedLatticeEdges.js';
 
 /**
  * Default lattice resolution of {@link ReachableSpace}: the longest side of its box is divided into
@@ -26,7 +27,7 @@ export interface ReachableSpaceOptions {
 /**
  * The open space reachable from seed points (the player's spawn, say) without crossing a triangle:
  * a flood fill over a lattice of points in a box. Two neighbouring lattice points (6-neighbours)
- * are connected when the segment between them crosses no triangle (`TriangleBVH.segmentBlocked`);
+ * are connected when the segment between them crosses no triangle (`TriangleBVH.segmentBlocked`, answered for every edge at once);
  * a seed starts the fill at each corner of its lattice cell it sees. A point is reachable when it
  * sees a reached corner of its own cell. Points outside the box are not reachable: by default the
  * box is the scene's bounding box, so the outside of a level counts as unreachable even where
@@ -38,8 +39,9 @@ export interface ReachableSpaceOptions {
  * `cellSize`), and a crack in a mesh that a lattice segment happens to pass through, which lets
  * the fill leak.
  *
- * Cost: up to 6 segment tests per reached lattice point, once, in the constructor; queries test
- * at most 8 segments.
+ * Cost: the lattice edges a triangle crosses are found once, in the constructor, from the
+ * triangles' side (`blockedLatticeEdges`: about the lattice lines each triangle spans), then the
+ * fill reads them; queries test at most 8 segments.
  */
 export class ReachableSpace {
 
@@ -153,21 +155,23 @@ export class ReachableSpace {
 
 		}
 
-		const p = new Float64Array( 3 ), q = new Float64Array( 3 );
+		// Every lattice edge's segment test at once, from the triangles' side (blockedLatticeEdges).
+		const origin = [ 0, 1, 2 ].map( ( a ) => box[ a ] + PHASE[ a ] * this.spacing[ a ] );
+		const blocked = blockedLatticeEdges( bvh.triangles, { origin, spacing: this.spacing, counts: this.counts } );
+		const stride = [ 1, nx, nx * ny ];
 		for ( let head = 0; head < tail; head ++ ) {
 
 			const node = queue[ head ];
 			const i = node % nx, j = Math.floor( node / nx ) % ny, k = Math.floor( node / ( nx * ny ) );
-			this.pointOf( node, p );
 			for ( let n = 0; n < 6; n ++ ) {
 
-				const axis = n >> 1, step = n & 1 ? 1 : - 1;
-				const ii = i + ( axis === 0 ? step : 0 ), jj = j + ( axis === 1 ? step : 0 ), kk = k + ( axis === 2 ? step : 0 );
-				if ( ii < 0 || ii >= nx || jj < 0 || jj >= ny || kk < 0 || kk >= nz ) continue;
-				const neighbour = ii + nx * ( jj + ny * kk );
+				const axis = n >> 1, up = ( n & 1 ) === 1;
+				const at = axis === 0 ? i : axis === 1 ? j : k;
+				if ( up ? at + 1 >= this.counts[ axis ] : at === 0 ) continue;
+				const neighbour = up ? node + stride[ axis ] : node - stride[ axis ];
 				if ( this.reached[ neighbour ] === 1 ) continue;
-				this.pointOf( neighbour, q );
-				if ( bvh.segmentBlocked( p[ 0 ], p[ 1 ], p[ 2 ], q[ 0 ], q[ 1 ], q[ 2 ] ) ) continue;
+				// The edge between the two is stored at its lower end.
+				if ( blocked[ axis ][ up ? node : neighbour ] === 1 ) continue;
 				this.reached[ neighbour ] = 1;
 				queue[ tail ++ ] = neighbour;
 

@@ -81,6 +81,13 @@ export interface ClassifyPointsOptions {
 	/** Lattice spacing of the `reachableFrom` flood fill (> 0; default: the longest side of the box / 64). */
 	reachCellSize?: number;
 
+	/**
+	 * The box of the `reachableFrom` flood fill, [ minX, minY, minZ, maxX, maxY, maxZ ] (default: the
+	 * triangles' bounds, grown to hold the seeds): points outside it are {@link UNREACHABLE}. A level
+	 * inside a sky dome floods only the level's box, at the lattice spacing that box gives.
+	 */
+	reachBounds?: ArrayLike<number>;
+
 }
 
 /**
@@ -142,7 +149,7 @@ export function classifyPointsFor(
 
 		}
 
-		reachable = new ReachableSpace( bvh, seeds, { cellSize: options.reachCellSize }, where, 'options.reachableFrom' );
+		reachable = new ReachableSpace( bvh, seeds, { cellSize: options.reachCellSize, bounds: options.reachBounds }, where, 'options.reachableFrom' );
 
 	}
 

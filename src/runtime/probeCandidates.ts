@@ -85,8 +85,9 @@ export function placeCandidates( where: string, geometry: StaticGeometry, settin
 	const union = thinToSpacing( concatenate( [ vertices, grid ] ), ( vertices.length + grid.length ) / 3, spacing / 2 );
 	// The grid is classified after the candidates in the same call (one reachability fill) when the open volume is wanted.
 	const points = settings.measureOpenVolume === true ? concatenate( [ union, grid ] ) : union;
+	const seeds = settings.reachableFrom;
 	const all = classifyPointsFor( where, points, new TriangleBVH( triangles ), {
-		minDistance: clearance, sides, reachableFrom: settings.reachableFrom,
+		minDistance: clearance, sides, reachableFrom: seeds, reachBounds: seeds === undefined ? undefined : floodBox( box, seeds ),
 	} );
 	const classes = all.subarray( 0, union.length / 3 );
 	let openVolume = NaN;
@@ -180,6 +181,30 @@ function inBox( points: Float64Array, box: number[] ): Float64Array {
 	}
 
 	return Float64Array.from( out );
+
+}
+
+/**
+ * The box of the reachability flood: the candidates' box grown to hold the seeds. Without
+ * `bounds` that is the flood's own default (the triangles' bounds and the seeds); with it, the
+ * flood spends its lattice on the part of the level where candidates are (not on a sky dome
+ * around it), and what lies outside that box is unreachable either way.
+ */
+function floodBox( box: number[], seeds: Float64Array ): number[] {
+
+	const out = box.slice();
+	for ( let i = 0; i < seeds.length; i += 3 ) {
+
+		for ( let a = 0; a < 3; a ++ ) {
+
+			out[ a ] = Math.min( out[ a ], seeds[ i + a ] );
+			out[ 3 + a ] = Math.max( out[ 3 + a ], seeds[ i + a ] );
+
+		}
+
+	}
+
+	return out;
 
 }
 

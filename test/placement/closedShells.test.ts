@@ -11,6 +11,7 @@ import { intersectRayTriangle } from '../../src/geometry/intersectRayTriangle.js
 import { TriangleBVH } from '../../src/geometry/TriangleBVH.js';
 import { gatherWorldGeometry } from '../../src/geometry/gatherWorldGeometry.js';
 import { ReachableSpace } from '../../src/placement/ReachableSpace.js';
+import { blockedLatticeEdges } from '../../src/placement/blockedLatticeEdges.js';
 import { readPointList } from '../../src/placement/readPointList.js';
 import { DRAWN_AGAINST_NORMAL, DRAWN_ALONG_NORMAL, gatherDrawnSides } from '../../src/placement/gatherDrawnSides.js';
 import { classifyPoints, INSIDE_GEOMETRY, OPEN_SPACE } from '../../src/placement/classifyPoints.js';
@@ -230,6 +231,60 @@ describe( 'ReachableSpace', () => {
 		expect( () => new ReachableSpace( bvh, [] ) ).toThrow( /^ReachableSpace: seeds needs at least 1/ );
 		expect( () => new ReachableSpace( bvh, [ 0, 1, 0 ], { cellSize: - 1 } ) ).toThrow( /^ReachableSpace: options\.cellSize must be a finite number/ );
 		expect( () => new ReachableSpace( bvh, [ 0, 1, 0 ], { bounds: [ 1, 1, 1, 0, 0, 0 ] } ) ).toThrow( /^ReachableSpace: options\.bounds must be/ );
+
+	} );
+
+	it( 'blockedLatticeEdges marks exactly the edges TriangleBVH.segmentBlocked finds blocked (random triangles, uneven lattice)', () => {
+
+		const random = seededRandom( 7 );
+		// 60 triangles of all sizes, some reaching past the lattice, one in an axis plane (parallel to two axes).
+		const triangles = new Float64Array( 9 * 61 );
+		for ( let t = 0; t < 60; t ++ ) {
+
+			const size = t % 3 === 0 ? 3 : 0.6, cx = 4 * random() - 0.5, cy = 3 * random() - 0.5, cz = 3.5 * random() - 0.5;
+			for ( let v = 0; v < 3; v ++ ) {
+
+				triangles[ 9 * t + 3 * v ] = cx + size * ( random() - 0.5 );
+				triangles[ 9 * t + 3 * v + 1 ] = cy + size * ( random() - 0.5 );
+				triangles[ 9 * t + 3 * v + 2 ] = cz + size * ( random() - 0.5 );
+
+			}
+
+		}
+
+		triangles.set( [ 0.1, 0.2, 1.3, 3.1, 0.3, 1.3, 1.5, 2.4, 1.3 ], 9 * 60 );
+		const tree = new TriangleBVH( triangles );
+		const origin = [ 0.013, - 0.021, 0.007 ], spacing = [ 0.31, 0.27, 0.33 ], counts = [ 12, 10, 9 ];
+		const blocked = blockedLatticeEdges( triangles, { origin, spacing, counts } );
+		const point = ( i: number, j: number, k: number ) => [ i, j, k ].map( ( n, a ) => origin[ a ] + n * spacing[ a ] );
+		let edges = 0, crossed = 0, mismatches = 0;
+		for ( let k = 0; k < counts[ 2 ]; k ++ ) for ( let j = 0; j < counts[ 1 ]; j ++ ) for ( let i = 0; i < counts[ 0 ]; i ++ ) {
+
+			const node = i + counts[ 0 ] * ( j + counts[ 1 ] * k );
+			for ( let a = 0; a < 3; a ++ ) {
+
+				const next = [ i, j, k ];
+				next[ a ] ++;
+				if ( next[ a ] >= counts[ a ] ) {
+
+					expect( blocked[ a ][ node ] ).toBe( 0 ); // the last point of a line has no edge
+					continue;
+
+				}
+
+				const p = point( i, j, k ), q = point( next[ 0 ], next[ 1 ], next[ 2 ] );
+				const truth = tree.segmentBlocked( p[ 0 ], p[ 1 ], p[ 2 ], q[ 0 ], q[ 1 ], q[ 2 ] );
+				edges ++;
+				if ( truth ) crossed ++;
+				if ( truth !== ( blocked[ a ][ node ] === 1 ) ) mismatches ++;
+
+			}
+
+		}
+
+		expect( edges ).toBe( 11 * 10 * 9 + 12 * 9 * 9 + 12 * 10 * 8 );
+		expect( crossed ).toBeGreaterThan( 200 ); // the test means something: many edges are crossed
+		expect( mismatches ).toBe( 0 );
 
 	} );
 
