@@ -12,6 +12,7 @@ import { kyotoLegend } from './common/kyotoLegend.js';
 import { panoramaTableText } from './common/kyotoPanoramaTable.js';
 import { screenBox } from './common/screenBox.js';
 import { Overlay } from './common/Overlay.js';
+import { addRendererSwitch, backendLabel, chooseRenderer, createRenderer, initRenderer, watchRendererLoss } from './common/rendererChoice.js';
 import type { DemoReport } from './common/report.js';
 import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, type KyotoPanorama } from '@scenes/kyoto.js';
 
@@ -25,7 +26,8 @@ import { createKyotoMap, derivePanorama, kyoto, kyotoPath, type KyotoLayout, typ
 // the raw panoramas).
 //
 // Query: assets (asset folder URL, default /assets/), layout, t (freeze time, seconds),
-// background=none, probes=0 (hide probe markers), hide=gui, deringing=s, nonnegative=1.
+// background=none, probes=0 (hide probe markers), hide=gui, deringing=s, nonnegative=1,
+// renderer=webgpu|webgl2 (a WebGPURenderer, the library from three-capture-lighting/webgpu).
 // For tests: window.__demo (DemoReport) and window.__kyoto (addPanorama( url, x, z, name? ), params, showLegend, …).
 
 interface Panorama extends KyotoPanorama { texture: THREE.Texture; sh: Float32Array; ms: number; minE: number; maxE: number; size: string }
@@ -35,7 +37,7 @@ const assets = query.get( 'assets' ) ?? '/assets/';
 const FOX_HEIGHT = 1.8, LOOP_SECONDS = 60;
 const frozen = query.get( 't' );
 
-const report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', error: '' };
+const report: DemoReport = { ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', error: '', renderer: '' };
 const overlay = new Overlay();
 const layouts: KyotoLayout[] = structuredClone( kyoto.layouts );
 const panoramas = new Map<string, Panorama>();
@@ -46,11 +48,15 @@ const params = {
 	exposure: 1, table: window.innerWidth >= 900, triangles: true, probes: query.get( 'probes' ) !== '0', labels: query.get( 'probes' ) !== '0', animate: true,
 };
 
-const renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
+// ?renderer=: a WebGLRenderer, or a WebGPURenderer (typed as the WebGLRenderer the library's signatures name).
+const rendererChoice = await chooseRenderer();
+const renderer = createRenderer( rendererChoice, { antialias: true, preserveDrawingBuffer: true } ) as THREE.WebGLRenderer;
 renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
 renderer.setSize( window.innerWidth, window.innerHeight );
 renderer.toneMapping = THREE.ACESFilmicToneMapping;
 document.body.appendChild( renderer.domElement );
+watchRendererLoss( renderer, ( message ) => overlay.error( message ) );
+if ( rendererChoice.notice ) overlay.notice( rendererChoice.notice );
 const labelRenderer = new CSS2DRenderer();
 labelRenderer.setSize( window.innerWidth, window.innerHeight );
 labelRenderer.domElement.style.cssText = 'position:absolute;top:0;left:0;pointer-events:none';
@@ -114,11 +120,14 @@ async function loadPanorama( url: string, name: string ): Promise<THREE.Texture>
 
 }
 
-/** Projects a panorama to SH9 on the GPU, timed, and records the range of its irradiance E(n). */
-function project( entry: KyotoPanorama, texture: THREE.Texture ): Panorama {
+/**
+ * Projects a panorama to SH9 on the GPU, timed, and records the range of its irradiance E(n). Awaited:
+ * a WebGPURenderer reads its result back asynchronously.
+ */
+async function project( entry: KyotoPanorama, texture: THREE.Texture ): Promise<Panorama> {
 
 	const start = performance.now();
-	const sh = projectEquirectToSHGPU( renderer, texture );
+	const sh = await projectEquirectToSHGPU( renderer, texture );
 	const ms = performance.now() - start;
 	let minE = Infinity, maxE = - Infinity;
 	const e = new Float32Array( 3 );
@@ -143,7 +152,7 @@ async function projectAll(): Promise<void> {
 	const start = performance.now();
 	const warmup = new THREE.DataTexture( new Uint16Array( 4 * 16 * 8 ), 16, 8, THREE.RGBAFormat, THREE.HalfFloatType );
 	warmup.needsUpdate = true;
-	projectEquirectToSHGPU( renderer, warmup ); // compiles the shaders, so the times below are per panorama
+	await projectEquirectToSHGPU( renderer, warmup ); // compiles the shaders, so the times below are per panorama
 	warmup.dispose();
 	warmupMs = performance.now() - start;
 
@@ -168,7 +177,7 @@ async function projectAll(): Promise<void> {
 		overlay.progress( `projecting ${entry.label} to SH on the GPU (${done + 1} / ${kyoto.panoramas.length})`, done / kyoto.panoramas.length );
 		await nextFrame();
 		const texture = entry.kind === 'photo' ? textures[ photos.indexOf( entry ) ] : derivePanorama( panoramas.get( entry.source! )!.texture as THREE.DataTexture, entry.yaw ?? 0, entry.gain );
-		project( entry, texture );
+		await project( entry, texture );
 		done ++;
 
 	}
@@ -321,7 +330,7 @@ async function addPanorama( url: string, x: number, z: number, name = url.split(
 	try {
 
 		const texture = await loadPanorama( url, name );
-		const panorama = project( { id: `drop${panoramas.size}`, label: name.slice( 0, 12 ), kind: 'dropped', note: `dropped file ${name}` }, texture );
+		const panorama = await project( { id: `drop${panoramas.size}`, label: name.slice( 0, 12 ), kind: 'dropped', note: `dropped file ${name}` }, texture );
 		layout().probes.push( { name, at: [ x, z ], panorama: panorama.id, role: 'fill' } );
 		delete layout().grid;
 		buildVolume();
@@ -372,6 +381,7 @@ function createGui(): void {
 
 	if ( query.get( 'hide' ) === 'gui' ) return;
 	const gui = new GUI();
+	addRendererSwitch( gui, rendererChoice );
 	gui.add( params, 'layout', layouts.map( ( l ) => l.name ) ).onChange( buildVolume );
 	gui.add( params, 'background', [ 'strongest probe', 'none' ] );
 	gui.add( params, 'deringing', 0, 0.5, 0.01 ).name( 'de-ringing strength' ).onFinishChange( buildVolume );
@@ -483,6 +493,9 @@ async function start(): Promise<void> {
 	try {
 
 		overlay.progress( 'loading the panoramas…', 0 );
+		await initRenderer( renderer );
+		report.renderer = backendLabel( renderer );
+		if ( query.get( 'hide' ) !== 'gui' ) overlay.renderer( report.renderer );
 		await projectAll();
 		await addCharacterAndSpheres();
 		// No capture of the scene here (the SH come from the panoramas), so the fox and the spheres

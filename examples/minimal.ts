@@ -2,12 +2,18 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { LightProbeVolume, placeGrid } from 'three-capture-lighting';
 import { createBasicRoom } from '@scenes/basic.js';
+import { backendLabel, chooseRenderer, createRenderer, initRenderer, rendererLinks } from './common/rendererChoice.js';
 
 // The README's example, whole: a level (the Basic room: red, green and blue walls, one warm lamp)
 // and a character (a white ball walking a loop), both lit by light probes captured from the level.
 // The lines between "README example" and "end" are the README's, verbatim (a test compares them).
 
-const renderer = new THREE.WebGLRenderer( { antialias: true } );
+// ?renderer=webgpu|webgl2: the same code on a WebGPURenderer, with the library imported from
+// 'three-capture-lighting/webgpu' (see common/rendererChoice.ts). Typed as the WebGLRenderer the
+// library's signatures name.
+const choice = await chooseRenderer();
+const renderer = createRenderer( choice, { antialias: true } ) as THREE.WebGLRenderer;
+await initRenderer( renderer );
 renderer.setPixelRatio( window.devicePixelRatio );
 renderer.setSize( window.innerWidth, window.innerHeight );
 document.body.appendChild( renderer.domElement );
@@ -28,6 +34,9 @@ scene.add( character );
 
 const status = document.getElementById( 'status' )!;
 status.textContent = 'capturing…';
+// Which backend draws, and links that reload with another (the page has no panel: its picture is the README's).
+document.getElementById( 'info' )!.append( rendererLinks( backendLabel( renderer ), choice ) );
+if ( choice.notice ) document.getElementById( 'info' )!.append( ` — ${choice.notice}` );
 
 // README example
 const volume = new LightProbeVolume( {

@@ -15,6 +15,8 @@ export class Overlay {
 	/** Bottom left: the legend above the status text. */
 	private readonly hud = element( 'hud' );
 	private readonly legendElement = element( 'legend', this.hud );
+	/** Hidden until set: an empty line would still take a gap in the hud's column. */
+	private readonly rendererElement = hidden( element( 'renderer', this.hud ) );
 	private readonly statusElement = element( 'status', this.hud );
 	/** The progress block in the middle of the page: a label above a bar. */
 	private readonly progressElement = element( 'progress' );
@@ -22,6 +24,17 @@ export class Overlay {
 	private readonly bar = element( 'progress-bar', element( 'progress-track', this.progressElement ) );
 	private readonly noticeElement = element( 'notice' );
 	private readonly errorElement = element( 'error' );
+
+	/**
+	 * Which renderer and backend draw the page ('WebGPU', 'WebGPURenderer (WebGL2 backend)',
+	 * 'WebGLRenderer'): a line above the status.
+	 */
+	renderer( text: string ): void {
+
+		this.rendererElement.textContent = text;
+		this.rendererElement.style.cssText = 'font: 12px ui-monospace, monospace; color: #8cf; text-shadow: 0 0 3px #000;';
+
+	}
 
 	/** The bottom-left status text. */
 	status( text: string ): void {
@@ -77,6 +90,13 @@ export class Overlay {
 		} ) );
 
 	}
+
+}
+
+function hidden( div: HTMLDivElement ): HTMLDivElement {
+
+	div.style.display = 'none';
+	return div;
 
 }
 

@@ -89,6 +89,8 @@ export class ProbeVolumeDemo implements EditableVolume {
 	/** Loads the baked volume (`volume=URL`) or creates and captures the first layout's; opens the panel. */
 	async start(): Promise<void> {
 
+		// A WebGPURenderer renders (and captures) only once its init() is done.
+		await this.viewer.ready;
 		const baked = this.viewer.query.volume;
 		if ( baked ) await this.loadBaked( baked );
 		if ( ! this.viewer.query.hideGui ) this.gui = this.createPanel();
@@ -348,7 +350,7 @@ export class ProbeVolumeDemo implements EditableVolume {
 				download( fileName( this.layout.name, 'lpv' ), file, 'application/octet-stream' );
 
 			},
-		} );
+		}, this.viewer.rendererChoice );
 
 	}
 

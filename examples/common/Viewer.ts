@@ -3,7 +3,12 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import { Overlay } from './Overlay.js';
 import { readDemoQuery, type DemoQuery, type DemoSettings } from './queryParameters.js';
+import { backendLabel, chooseRenderer, createRenderer, initRenderer, watchRendererLoss, type RendererChoice } from './rendererChoice.js';
 import { recordFrame, type DemoReport } from './report.js';
+
+// ?renderer= is read, and for a WebGPURenderer three/webgpu and three-capture-lighting/webgpu
+// loaded, before any page makes its Viewer, so the constructor can make the renderer at once.
+const rendererChoice = await chooseRenderer();
 
 /** Where a page's camera starts. */
 export interface ViewerCamera {
@@ -37,10 +42,18 @@ export class Viewer {
 	readonly helpers = new THREE.Group();
 	/** `window.__demo`. */
 	readonly report: DemoReport = {
-		ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', leakingCells: 0, error: '',
+		ready: false, captureMs: 0, probes: 0, cells: 0, frameMs: [], intervalMs: [], character: 'none', leakingCells: 0, error: '', renderer: '',
 	};
-	/** Antialiased, filmic tone mapping (`tonemapping=none`: none), drawing buffer kept for screenshots. */
+	/** `?renderer=`: which renderer was asked for and runs (the panel's "renderer" list switches it). */
+	readonly rendererChoice: RendererChoice = rendererChoice;
+	/**
+	 * Antialiased, filmic tone mapping (`tonemapping=none`: none), drawing buffer kept for screenshots:
+	 * a WebGLRenderer, or with `?renderer=webgpu|webgl2` a WebGPURenderer (typed as WebGLRenderer,
+	 * which the library's capture signatures name; `rendererChoice` says which it is).
+	 */
 	readonly renderer: THREE.WebGLRenderer;
+	/** Resolves once the renderer can render (a WebGPURenderer's `init()`); `ProbeVolumeDemo.start()` waits for it. */
+	readonly ready: Promise<void>;
 	readonly camera: THREE.PerspectiveCamera;
 	/** Orbit controls around the page's camera target (probes are added there). */
 	readonly controls: OrbitControls;
@@ -53,18 +66,22 @@ export class Viewer {
 	/** Creates the renderer, camera and controls, and shows 'loading the scene…' until the first capture. */
 	constructor( { camera: { position, target, fov = 60, near = 0.05, far = 500 } }: { camera: ViewerCamera } ) {
 
-		this.renderer = new THREE.WebGLRenderer( { antialias: true, preserveDrawingBuffer: true } );
+		const renderer = createRenderer( rendererChoice, { antialias: true, preserveDrawingBuffer: true } );
+		this.renderer = renderer as THREE.WebGLRenderer;
 		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
 		this.renderer.setSize( window.innerWidth, window.innerHeight );
 		// Filmic tone mapping for viewing; ?tonemapping=none keeps colour ratios for measurements.
 		this.renderer.toneMapping = this.query.noToneMapping ? THREE.NoToneMapping : THREE.ACESFilmicToneMapping;
 		document.body.appendChild( this.renderer.domElement );
-		this.renderer.domElement.addEventListener( 'webglcontextlost', () => {
+		watchRendererLoss( renderer, ( message ) => this.overlay.error( message ) );
+		if ( rendererChoice.notice ) this.overlay.notice( rendererChoice.notice );
+		this.ready = initRenderer( renderer ).then( () => {
 
-			this.overlay.error( 'The WebGL context was lost; the probe SH are kept. Waiting for the browser to restore it…' );
+			// Which backend runs: in the report for tests, and on the page unless hide=gui (screenshots).
+			this.report.renderer = backendLabel( renderer );
+			if ( ! this.query.hideGui ) this.overlay.renderer( this.report.renderer );
 
 		} );
-		this.renderer.domElement.addEventListener( 'webglcontextrestored', () => this.overlay.error( '' ) );
 
 		this.camera = new THREE.PerspectiveCamera( fov, window.innerWidth / window.innerHeight, near, far );
 		this.camera.position.fromArray( position );
@@ -106,6 +123,12 @@ export class Viewer {
 	 * time, the panel's "animate" off makes delta 0 — then renders and records the frame's timings.
 	 */
 	animate( frame: ( time: number, delta: number ) => void ): void {
+
+		this.ready.then( () => this.startLoop( frame ) ).catch( ( error ) => this.showError( error ) );
+
+	}
+
+	private startLoop( frame: ( time: number, delta: number ) => void ): void {
 
 		this.renderer.setAnimationLoop( ( timestamp ) => {
 

@@ -1,6 +1,7 @@
 import GUI from 'lil-gui';
 import { VIEWS, type DemoSettings } from './queryParameters.js';
 import type { ProbeLayout } from './layouts.js';
+import { addRendererSwitch, type RendererChoice } from './rendererChoice.js';
 
 /** What the panel's controls do (besides editing `DemoSettings`). */
 export interface PanelActions {
@@ -30,12 +31,14 @@ export interface PanelActions {
 }
 
 /**
- * The lil-gui panel of a scene page: layout, interpolation, view mode, capture resolution,
- * what is drawn, the features beyond the paper and probe editing. Pages add their own controls.
+ * The lil-gui panel of a scene page: the renderer (a reload with `?renderer=`), layout,
+ * interpolation, view mode, capture resolution, what is drawn, the features beyond the paper and
+ * probe editing. Pages add their own controls.
  */
-export function createPanel( settings: DemoSettings, layouts: ProbeLayout[], actions: PanelActions ): GUI {
+export function createPanel( settings: DemoSettings, layouts: ProbeLayout[], actions: PanelActions, renderer: RendererChoice ): GUI {
 
 	const gui = new GUI();
+	addRendererSwitch( gui, renderer );
 	gui.add( settings, 'layout', layouts.map( ( layout ) => layout.name ) ).onChange( () => actions.layoutChanged() );
 	gui.add( settings, 'interpolation', [ 'tetrahedral', 'trilinear' ] ).onChange( () => actions.interpolationChanged() ).listen();
 	gui.add( settings, 'view', VIEWS );

@@ -14,6 +14,8 @@ export interface DemoReport {
 	loadMs?: number;
 	/** With the visibility guard on: tetrahedra with an edge through static geometry. */
 	leakingCells?: number;
+	/** Which backend runs ('WebGLRenderer', 'WebGPU', 'WebGPURenderer (WebGL2 backend)'); '' until the renderer is ready. */
+	renderer?: string;
 	error: string;
 
 }
