@@ -2,8 +2,9 @@ import { Box3, type Material, type Mesh } from 'three';
 import type { ProbeField } from './ProbeField.js';
 import { ProbeVolumeTexture } from './ProbeVolumeTexture.js';
 import { meshWorldBox } from './chooseLighting.js';
-import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
-import { isProbeLitMaterial } from './probeLitMaterials.js';
+import type { ProbeVolumeUniforms } from './patchMaterial.js';
+import { patchProbeMaterial } from './nodeMaterialHooks.js';
+import { takesProbeLight } from './probeLitMaterials.js';
 
 /** Options of {@link MeshTextureLighting}. */
 export interface MeshTextureLightingOptions {
@@ -70,10 +71,10 @@ export class MeshTextureLighting {
 		const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 		const replacement = materials.map( ( material ) => {
 
-			if ( ! isProbeLitMaterial( material ) ) return material;
+			if ( ! takesProbeLight( material ) ) return material;
 			// A clone: the original may light other meshes, outside this texture's box.
 			const copy = material.clone();
-			patchMaterial( copy, { source: 'texture', uniforms: this.uniforms } );
+			patchProbeMaterial( copy, { source: 'texture', perVertex: false, uniforms: this.uniforms } );
 			this.clones.push( copy );
 			return copy;
 

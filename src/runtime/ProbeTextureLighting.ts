@@ -2,8 +2,9 @@ import { Box3, Vector3, type Material, type Mesh, type Object3D } from 'three';
 import { assertProbeField, assertUsableProbeField, type ProbeField } from './ProbeField.js';
 import { ProbeVolumeTexture, checkVolumeTextureOptions, type ProbeVolumeTextureOptions } from './ProbeVolumeTexture.js';
 import { assertOptions } from '../validate.js';
-import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
-import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
+import type { ProbeVolumeUniforms } from './patchMaterial.js';
+import { patchProbeMaterial } from './nodeMaterialHooks.js';
+import { PROBE_LIT_MATERIALS, takesProbeLight } from './probeLitMaterials.js';
 
 /** Options of {@link ProbeTextureLighting}: the texture's plus intensity and padding. */
 export interface ProbeTextureLightingOptions extends ProbeVolumeTextureOptions {
@@ -90,10 +91,10 @@ export class ProbeTextureLighting {
 			let changed = false;
 			const replacement = materials.map( ( material ) => {
 
-				if ( ! isProbeLitMaterial( material ) ) return material;
+				if ( ! takesProbeLight( material ) ) return material;
 				// A clone: the original may light other objects, outside this texture's box.
 				const copy = material.clone();
-				patchMaterial( copy, { source: 'texture', uniforms: this.uniforms } );
+				patchProbeMaterial( copy, { source: 'texture', perVertex: false, uniforms: this.uniforms } );
 				this.clones.push( copy );
 				changed = true;
 				return copy;

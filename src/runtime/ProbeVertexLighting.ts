@@ -4,8 +4,9 @@ import { blendProbes } from './gradientBlend.js';
 import { GradientTracker } from './gradientTracker.js';
 import { assertProbeField, assertUsableProbeField, trackSH, type ProbeField } from './ProbeField.js';
 import { assertOptions } from '../validate.js';
-import { patchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
-import { PROBE_LIT_MATERIALS, isProbeLitMaterial } from './probeLitMaterials.js';
+import type { ProbeVolumeUniforms } from './patchMaterial.js';
+import { patchProbeMaterial } from './nodeMaterialHooks.js';
+import { PROBE_LIT_MATERIALS, takesProbeLight } from './probeLitMaterials.js';
 
 /** Options of {@link ProbeVertexLighting}. */
 export interface ProbeVertexLightingOptions {
@@ -168,10 +169,10 @@ export class ProbeVertexLighting {
 		const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
 		const replaced = materials.map( ( material ) => {
 
-			if ( ! isProbeLitMaterial( material ) ) return material;
+			if ( ! takesProbeLight( material ) ) return material;
 			// A clone: the original may be shared with meshes that have no probe attributes.
 			const copy = material.clone();
-			patchMaterial( copy, { source: output === 'irradiance' ? 'vertexIrradiance' : 'vertexSH', uniforms: this.uniforms } );
+			patchProbeMaterial( copy, { source: output === 'irradiance' ? 'vertexIrradiance' : 'vertexSH', perVertex: false, uniforms: this.uniforms } );
 			this.clones.push( copy );
 			return copy;
 

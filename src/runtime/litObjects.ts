@@ -11,8 +11,9 @@ import { ProbeVertexLighting } from './ProbeVertexLighting.js';
 import { MAX_WEIGHTS, type ProbeWeighting, type VisibilityCache } from './ProbeWeighting.js';
 import type { ProbeField } from './ProbeField.js';
 import type { ProbeZones } from './ProbeZones.js';
-import { getProbeVolumeUniforms, patchMaterial, unpatchMaterial, type ProbeVolumeUniforms } from './patchMaterial.js';
-import { PROBE_LIT_MATERIALS, hasProbeLitMaterial, isProbeLitMaterial, meshMaterials } from './probeLitMaterials.js';
+import type { ProbeVolumeUniforms } from './patchMaterial.js';
+import { isLitNodeMaterial, nodeMaterialShading, nodeMaterialsNeedWebGPUEntry, patchProbeMaterial, probeUniformsOf, unpatchProbeMaterial } from './nodeMaterialHooks.js';
+import { PROBE_LIT_MATERIALS, hasProbeLitMaterial, meshMaterials, takesProbeLight } from './probeLitMaterials.js';
 
 /*
  * The objects a `LightProbeVolume` lights: registration in its three modes (object, vertex,
@@ -89,7 +90,7 @@ const BLEND_SQUARES = 28 * SH_LIMIT * SH_LIMIT;
 
 /**
  * Builds the entry that lights `object` in the mode of `options`: the large-object lightings, or
- * the object's materials that take probe light (see `isProbeLitMaterial`) patched — in place when
+ * the object's materials that take probe light (see `takesProbeLight`) patched — in place when
  * only this object uses them, else as clones (uniforms live on the material). The caller pushes
  * it into `lit` (the other entries, whose patched materials this one must not take over); an
  * object-mode entry then needs one {@link updateLitObject}.
@@ -138,7 +139,7 @@ export function disposeLitObject( entry: LitObject ): void {
 
 	for ( const lighting of entry.large ?? [] ) lighting.dispose();
 	for ( const { mesh, original } of entry.replaced ) mesh.material = original;
-	for ( const material of entry.patched ) unpatchMaterial( material );
+	for ( const material of entry.patched ) unpatchProbeMaterial( material );
 	for ( const material of entry.clones ) material.dispose();
 
 }
@@ -252,16 +253,28 @@ export function reportBadBlend( where: string, entry: LitObject, sh: Float32Arra
  */
 function assertProbeLitObject( object: Object3D ): void {
 
-	const types = new Set<string>();
+	const types = new Set<string>(), nodes = new Set<string>();
 	let found = false;
 	object.traverse( ( node ) => {
 
 		if ( found || ( node as Mesh ).isMesh !== true ) return;
 		found = hasProbeLitMaterial( node as Mesh );
-		for ( const material of meshMaterials( node as Mesh ) ) types.add( material.type );
+		for ( const material of meshMaterials( node as Mesh ) ) {
+
+			types.add( material.type );
+			if ( isLitNodeMaterial( material ) ) nodes.add( material.type );
+
+		}
 
 	} );
 	if ( found || types.size === 0 ) return;
+	// Lit node materials are lit by the WebGPU entry's shading: without it, say where to get it.
+	if ( nodeMaterialShading() === null && nodes.size > 0 ) {
+
+		throw new TypeError( nodeMaterialsNeedWebGPUEntry( 'LightProbeVolume.add', describeObject( object ), [ ...nodes ] ) );
+
+	}
+
 	throw new TypeError( `LightProbeVolume.add: ${describeObject( object )} has only ${[ ...types ].join( ', ' )}; probe light `
 		+ `needs a mesh with a ${PROBE_LIT_MATERIALS} (the others are unlit or shade themselves).` );
 
@@ -396,11 +409,11 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 		materials.forEach( ( material, i ) => {
 
 			// A null or undefined slot is drawn by nothing (three skips it): nothing to patch.
-			if ( ! isProbeLitMaterial( material ) ) return;
-			if ( owned.has( material ) || ( getProbeVolumeUniforms( material ) !== null && ! entry.patched.includes( material ) ) ) {
+			if ( ! takesProbeLight( material ) ) return;
+			if ( owned.has( material ) || ( probeUniformsOf( material ) !== null && ! entry.patched.includes( material ) ) ) {
 
 				const copy = material.clone();
-				patchMaterial( copy, { perVertex, uniforms: entry.uniforms } );
+				patchProbeMaterial( copy, { source: 'uniform', perVertex: perVertex === true, uniforms: entry.uniforms } );
 				replacement ??= materials.slice();
 				replacement[ i ] = copy;
 				entry.clones.push( copy );
@@ -410,7 +423,7 @@ function patchObjectMaterials( entry: LitObject, perVertex: boolean | undefined,
 
 			if ( ! entry.patched.includes( material ) ) {
 
-				patchMaterial( material, { perVertex, uniforms: entry.uniforms } );
+				patchProbeMaterial( material, { source: 'uniform', perVertex: perVertex === true, uniforms: entry.uniforms } );
 				entry.patched.push( material );
 
 			}
