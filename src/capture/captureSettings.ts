@@ -112,10 +112,50 @@ export function checkLayers( where: string, name: string, layers: unknown ): ass
 
 }
 
-/** A three.js `WebGLRenderer` (its context is read during the capture). */
-export function assertRenderer( where: string, renderer: unknown ): asserts renderer is WebGLRenderer {
+/**
+ * A `WebGPURenderer` (`three/webgpu`), as the capture code sees it: a structural type, so the
+ * WebGL core never loads three's node system. Its capture is installed by
+ * `three-capture-lighting/webgpu` (src/capture/captureBackends.ts).
+ */
+export interface WebGPURendererLike {
+
+	readonly isWebGPURenderer: true;
+
+}
+
+/** A renderer that captures probes: a `WebGLRenderer` (WebGL2), or a `WebGPURenderer` (either backend). */
+export type CaptureRenderer = WebGLRenderer | WebGPURendererLike;
+
+/** Whether `renderer` is a three.js `WebGPURenderer` (its WebGPU backend or its WebGL2 fallback). */
+export function isWebGPURenderer( renderer: unknown ): renderer is WebGPURendererLike {
+
+	return ( renderer as { isWebGPURenderer?: unknown } | null )?.isWebGPURenderer === true;
+
+}
+
+/**
+ * A renderer to capture with: a three.js `WebGLRenderer` or `WebGPURenderer`. (A WebGPURenderer
+ * also needs `three-capture-lighting/webgpu` imported; `createProbeCapturer` says so.)
+ */
+export function assertRenderer( where: string, renderer: unknown ): asserts renderer is CaptureRenderer {
 
 	const candidate = renderer as { isWebGLRenderer?: boolean; getContext?: unknown } | null;
+	if ( isWebGPURenderer( renderer ) || ( candidate?.isWebGLRenderer === true && typeof candidate.getContext === 'function' ) ) return;
+	throw new TypeError( `${where}: renderer must be a three.js WebGLRenderer or WebGPURenderer, got ${describeValue( renderer )}.` );
+
+}
+
+/** A three.js `WebGLRenderer` (its context is read during the capture): what `ProbeCapturer` and `SHProjector` draw with. */
+export function assertWebGLRenderer( where: string, renderer: unknown ): asserts renderer is WebGLRenderer {
+
+	const candidate = renderer as { isWebGLRenderer?: boolean; getContext?: unknown } | null;
+	if ( isWebGPURenderer( renderer ) ) {
+
+		throw new TypeError( `${where}: renderer is a WebGPURenderer; this class draws with a WebGLRenderer only. `
+			+ 'Capture through LightProbeVolume.capture or createProbeCapturer (with the library imported from \'three-capture-lighting/webgpu\').' );
+
+	}
+
 	if ( candidate?.isWebGLRenderer !== true || typeof candidate.getContext !== 'function' ) {
 
 		throw new TypeError( `${where}: renderer must be a three.js WebGLRenderer, got ${describeValue( renderer )}.` );

@@ -1,7 +1,8 @@
 import type { Texture, WebGLRenderer } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { SH_FLOATS, describeValue } from '../validate.js';
-import { assertRenderer } from './captureSettings.js';
+import { assertCaptureBackend, prepareRenderer } from './captureBackends.js';
+import type { CaptureRenderer, WebGPURendererLike } from './captureSettings.js';
 
 /**
  * GPU counterpart of {@link projectEquirectToSH}: projects an equirectangular panorama texture
@@ -9,16 +10,25 @@ import { assertRenderer } from './captureSettings.js';
  * which the GPU decodes to linear) onto SH9, in the same world orientation three uses when the
  * texture is shown with `EquirectangularReflectionMapping`.
  *
- * @param renderer A WebGL2 renderer.
+ * With a `WebGPURenderer` (the library imported from `three-capture-lighting/webgpu`) the
+ * projection runs on its GPU too and the result comes back asynchronously: the call returns a
+ * promise (`await` works on both).
+ *
+ * @param renderer A WebGL2 renderer, or a WebGPURenderer (either backend).
  * @param texture The panorama; it must have its image loaded (width and height known).
  * @param target Receives the 27 floats; a new Float32Array(27) when omitted.
- * @returns `target`.
+ * @returns `target` (with a WebGPURenderer, a promise of it).
  */
+export function projectEquirectToSHGPU( renderer: WebGLRenderer, texture: Texture, target?: Float32Array ): Float32Array;
+export function projectEquirectToSHGPU( renderer: WebGPURendererLike, texture: Texture, target?: Float32Array ): Promise<Float32Array>;
 export function projectEquirectToSHGPU(
-	renderer: WebGLRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ),
-): Float32Array {
+	renderer: CaptureRenderer, texture: Texture, target?: Float32Array,
+): Float32Array | Promise<Float32Array>;
+export function projectEquirectToSHGPU(
+	renderer: CaptureRenderer, texture: Texture, target: Float32Array = new Float32Array( SH_FLOATS ),
+): Float32Array | Promise<Float32Array> {
 
-	assertRenderer( 'projectEquirectToSHGPU', renderer );
+	const webgpu = assertCaptureBackend( 'projectEquirectToSHGPU', renderer );
 	const kind = texture as { isTexture?: boolean; isCubeTexture?: boolean } | null;
 	if ( kind?.isTexture !== true || kind.isCubeTexture === true ) {
 
@@ -40,7 +50,13 @@ export function projectEquirectToSHGPU(
 
 	}
 
-	const projector = new SHProjector( renderer );
+	if ( webgpu !== null ) {
+
+		return prepareRenderer( renderer ).then( () => webgpu.projectEquirect( renderer as WebGPURendererLike, texture, target ) );
+
+	}
+
+	const projector = new SHProjector( renderer as WebGLRenderer );
 	try {
 
 		projector.begin( 'equirect', width, 1, { height } );

@@ -1,4 +1,5 @@
 import type { Object3D, Scene, Vector3, WebGLRenderer } from 'three';
+import type { CaptureRenderer } from '../capture/captureSettings.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import type { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { BakedCapture, BakedFit, BakedVolumeData, BakedVolumeInput } from '../io/index.js';
@@ -231,8 +232,10 @@ export class LightProbeVolume {
 	 * each time (as `captureBounces`, which also returns the statistics of each pass). With
 	 * `options.fit`, captures extra points too and fits the SH (and gradients) to them; a later capture
 	 * of some probes (`recaptureDirty` after an edit) refits, one of every probe without `fit` does not.
+	 * `renderer`: a `WebGLRenderer`, or a `WebGPURenderer` with the library imported from
+	 * `three-capture-lighting/webgpu` (awaits `renderer.init()` when needed).
 	 */
-	async capture( renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
+	async capture( renderer: CaptureRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions = {} ): Promise<this> {
 
 		await captureVolume( 'LightProbeVolume.capture', this, renderer, scene, options );
 		return this;
@@ -257,11 +260,11 @@ export class LightProbeVolume {
 	 * {@link LightProbeVolume.capture}, without `indices`.
 	 */
 	async recaptureDirty(
-		renderer: WebGLRenderer, scene: Scene, options: Omit<LightProbeVolumeCaptureOptions, 'indices'> = {},
+		renderer: CaptureRenderer, scene: Scene, options: Omit<LightProbeVolumeCaptureOptions, 'indices'> = {},
 	): Promise<this> {
 
 		const where = 'LightProbeVolume.recaptureDirty';
-		assertRecaptureArguments( where, renderer, scene, options );
+		assertRecaptureArguments( where, renderer as WebGLRenderer, scene, options );
 		await captureVolume( where, this, renderer, scene, { ...options, indices: this.dirtyProbes() } );
 		return this;
 
@@ -386,7 +389,7 @@ export class LightProbeVolume {
 	 * candidates' captures, with progress per stage — see {@link FromSceneOptions}. Add the character
 	 * and the scene to it afterwards, as to any volume.
 	 */
-	static async fromScene( renderer: WebGLRenderer, scene: Scene, options: FromSceneOptions ): Promise<LightProbeVolume> {
+	static async fromScene( renderer: CaptureRenderer, scene: Scene, options: FromSceneOptions ): Promise<LightProbeVolume> {
 
 		const { volumeFromScene } = await import( './volumeFromScene.js' );
 		return volumeFromScene( renderer, scene, options );

@@ -1,4 +1,5 @@
-import { Layers, type BufferGeometry, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer } from 'three';
+import { Layers, type BufferGeometry, type Material, type Mesh, type Object3D, type Scene } from 'three';
+import type { CaptureRenderer } from '../capture/captureSettings.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
 import { SH_FLOATS, assertInteger } from '../validate.js';
 import { CAPTURE_ACCESS, applyCapturedProbes, captureProbes, type CaptureAccess, type CapturedProbes } from './captureProbes.js';
@@ -88,12 +89,12 @@ const MAX_BOUNCES = 16;
  * ```
  *
  * @param volume The probes; its `sh` receive the last pass.
- * @param renderer A WebGL2 renderer.
+ * @param renderer A WebGL2 renderer, or a WebGPURenderer (with `three-capture-lighting/webgpu` imported).
  * @param scene The scene to capture.
  * @param options See {@link CaptureBouncesOptions}.
  */
 export function captureBounces(
-	volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions,
+	volume: LightProbeVolume, renderer: CaptureRenderer, scene: Scene, options: CaptureBouncesOptions,
 ): Promise<CaptureBouncesResult> {
 
 	return captureWithBounces( 'captureBounces', volume, renderer, scene, options );
@@ -106,7 +107,7 @@ export function captureBounces(
  * only when everything was captured.
  */
 export async function captureVolume(
-	where: string, volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions,
+	where: string, volume: LightProbeVolume, renderer: CaptureRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions,
 ): Promise<void> {
 
 	if ( options?.bounces !== undefined ) {
@@ -132,7 +133,7 @@ export async function captureVolume(
 
 /** {@link captureBounces} with errors naming `where`. */
 export async function captureWithBounces(
-	where: string, volume: LightProbeVolume, renderer: WebGLRenderer, scene: Scene, options: CaptureBouncesOptions,
+	where: string, volume: LightProbeVolume, renderer: CaptureRenderer, scene: Scene, options: CaptureBouncesOptions,
 ): Promise<CaptureBouncesResult> {
 
 	const access = accessOf( where, volume );

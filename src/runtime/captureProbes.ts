@@ -1,5 +1,6 @@
-import type { Object3D, Scene, WebGLRenderer } from 'three';
-import { ProbeCapturer } from '../capture/ProbeCapturer.js';
+import type { Object3D, Scene } from 'three';
+import { createProbeCapturer, prepareRenderer } from '../capture/captureBackends.js';
+import type { CaptureRenderer } from '../capture/captureSettings.js';
 import type { BakedCapture } from '../io/index.js';
 import type { ProbeRole } from '../roles.js';
 import { makeIrradianceNonNegative, windowSH } from '../sh/windowSH.js';
@@ -112,7 +113,7 @@ export type CaptureStage = 'probes' | 'fit';
  */
 export async function captureProbes(
 	volume: CapturedVolume, lit: readonly LitObject[], indices: readonly number[],
-	renderer: WebGLRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions & { exclude?: Object3D[] },
+	renderer: CaptureRenderer, scene: Scene, options: LightProbeVolumeCaptureOptions & { exclude?: Object3D[] },
 	scenery: ProbeField | null = null, points: Float64Array | null = null,
 ): Promise<CapturedProbes> {
 
@@ -149,10 +150,12 @@ export async function captureProbes(
 
 	try {
 
+		// A WebGPURenderer draws only once initialised.
+		await prepareRenderer( renderer );
 		for ( const [ role, group ] of groups ) {
 
 			const settings = { ...options, ...( role ? options.roles?.[ role as ProbeRole ] : {} ) };
-			const capturer = new ProbeCapturer( renderer, settings );
+			const capturer = createProbeCapturer( renderer, settings );
 			try {
 
 				const start = done;
@@ -174,7 +177,7 @@ export async function captureProbes(
 
 		if ( points !== null && points.length > 0 ) {
 
-			const capturer = new ProbeCapturer( renderer, options );
+			const capturer = createProbeCapturer( renderer, options );
 			try {
 
 				const count = points.length / 3;

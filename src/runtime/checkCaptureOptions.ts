@@ -1,5 +1,6 @@
 import type { Object3D } from 'three';
-import { assertRenderer, assertScene, checkCaptureCall, checkCaptureSettings, checkLayers } from '../capture/captureSettings.js';
+import { assertCaptureBackend } from '../capture/captureBackends.js';
+import { assertScene, checkCaptureCall, checkCaptureSettings, checkLayers } from '../capture/captureSettings.js';
 import { PROBE_ROLES, isProbeRole } from '../roles.js';
 import { assertArrayLike, assertNumber, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 import type { CapturedVolume } from './captureProbes.js';
@@ -19,7 +20,8 @@ export interface CheckedCapture {
  * Checks everything `LightProbeVolume.capture` (and `captureBounces`) takes before anything is
  * captured: the common capture settings, each role's settings over them,
  * the per-call options, `deringing`, `nonNegative` and `indices` (live probe ids). The bounce
- * options are checked by `captureWithBounces`. Then the renderer and the scene.
+ * options are checked by `captureWithBounces`. Then the renderer (a WebGLRenderer, or a
+ * WebGPURenderer with `three-capture-lighting/webgpu` imported) and the scene.
  * @throws TypeError / RangeError starting with `where`.
  */
 export function checkCaptureOptions(
@@ -54,7 +56,7 @@ export function checkCaptureOptions(
 
 	assertOptionalBoolean( where, 'options.nonNegative', o.nonNegative );
 	const indices = captureIndices( where, volume, o.indices );
-	assertRenderer( where, renderer );
+	assertCaptureBackend( where, renderer );
 	assertScene( where, scene );
 	return { indices, exclude };
 

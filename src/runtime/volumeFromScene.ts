@@ -1,5 +1,6 @@
-import type { Box3, Mesh, Object3D, Scene, WebGLRenderer } from 'three';
-import { assertRenderer, assertScene, checkCaptureCall } from '../capture/captureSettings.js';
+import type { Box3, Mesh, Object3D, Scene } from 'three';
+import { assertCaptureBackend, prepareRenderer } from '../capture/captureBackends.js';
+import { assertScene, checkCaptureCall, type CaptureRenderer } from '../capture/captureSettings.js';
 import { readPointList, type PointList } from '../placement/readPointList.js';
 import { reduceProbes, type ReduceProbesResult } from '../placement/reduceProbes.js';
 import { weightsInRegion, type RegionOfInterest } from '../placement/regionOfInterest.js';
@@ -119,10 +120,11 @@ const OPTION_KEYS = [
  * to every candidate's capture. Nothing is added to the volume: add the character and the scene
  * afterwards as usual.
  */
-export async function volumeFromScene( renderer: WebGLRenderer, scene: Scene, options: FromSceneOptions ): Promise<LightProbeVolume> {
+export async function volumeFromScene( renderer: CaptureRenderer, scene: Scene, options: FromSceneOptions ): Promise<LightProbeVolume> {
 
 	const where = 'LightProbeVolume.fromScene';
 	const checked = checkOptions( where, renderer, scene, options );
+	await prepareRenderer( renderer );
 	const { resolution, candidateResolution, fit, gradients, progress } = checked;
 	const hidden = [ ...( checked.exclude ?? [] ), ...movingObjects( scene ) ];
 
@@ -204,7 +206,7 @@ function describeLayout( reduction: ReduceProbesResult, found: number, resolutio
 /** The checked options, with defaults. */
 function checkOptions( where: string, renderer: unknown, scene: unknown, options: FromSceneOptions ) {
 
-	assertRenderer( where, renderer );
+	assertCaptureBackend( where, renderer );
 	assertScene( where, scene );
 	if ( options === null || typeof options !== 'object' ) {
 
@@ -365,7 +367,7 @@ export function movingObjects( scene: Object3D ): Object3D[] {
 
 /** SH (and settings) of points captured by a temporary volume (hiding `exclude`), with errors re-addressed to fromScene. */
 async function captureAt(
-	where: string, renderer: WebGLRenderer, scene: Scene, positions: Float64Array, options: LightProbeVolumeCaptureOptions,
+	where: string, renderer: CaptureRenderer, scene: Scene, positions: Float64Array, options: LightProbeVolumeCaptureOptions,
 	onProgress: ( done: number, total: number ) => void,
 ): Promise<{ sh: Float32Array; settings: BakedCapture }> {
 

@@ -1,0 +1,234 @@
+import { CubeCamera, CubeRenderTarget, NearestFilter, type Object3D, type Scene, type TextureDataType, type WebGPURenderer } from 'three/webgpu';
+import type { ProbeCaptureOptions, ProbeCaptureSettings } from '../../capture/ProbeCapturer.js';
+import type { ProbeCapturerLike } from '../../capture/captureBackends.js';
+import { assertScene, checkCaptureCall, checkCaptureSettings } from '../../capture/captureSettings.js';
+import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
+import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../../validate.js';
+import { WebGPUSHProjector } from './WebGPUSHProjector.js';
+import { WebGPUShadowFreeze } from './WebGPUShadowFreeze.js';
+import { deviceLostError, isDeviceLost, watchDevice } from './deviceLoss.js';
+
+/**
+ * `ProbeCapturer` for `WebGPURenderer` (`three/webgpu`, either backend): renders a cube map at
+ * each probe with three's `CubeCamera` into a `CubeRenderTarget` (HalfFloat by default,
+ * NearestFilter), projects it to SH9 on the GPU ({@link WebGPUSHProjector}: compute kernels on the
+ * WebGPU backend, fragment passes on the WebGL2 one) and reads each batch back once. The same
+ * settings, options, batching, progress, hiding and shadow rules as `ProbeCapturer`; a lost
+ * device or context throws a named error and leaves `target` as it was.
+ *
+ * ```js
+ * await renderer.init();
+ * const capturer = new WebGPUProbeCapturer( renderer, { resolution: 32 } );
+ * const sh = await capturer.capture( scene, positions, new Float32Array( 27 * count ) );
+ * capturer.dispose();
+ * ```
+ */
+export class WebGPUProbeCapturer implements ProbeCapturerLike {
+
+	/** The renderer that draws the captures (initialised). */
+	readonly renderer: WebGPURenderer;
+
+	/** Cube face edge in texels. */
+	readonly resolution: number;
+
+	/** The cube render target every probe is rendered into. */
+	readonly cubeRenderTarget: CubeRenderTarget;
+
+	/** The cube camera; its position is set to each probe in turn. */
+	readonly cubeCamera: CubeCamera;
+
+	/** The GPU projection. */
+	readonly projector: WebGPUSHProjector;
+
+	private readonly solidAngle: CubeSolidAngleMode;
+	private readonly shadowMaps = new WebGPUShadowFreeze();
+	private busy = false;
+
+	/**
+	 * @param renderer An initialised WebGPURenderer (`await renderer.init()`).
+	 * @param settings As `ProbeCapturer`'s: resolution, near, far, type, solidAngle.
+	 */
+	constructor( renderer: WebGPURenderer, settings: ProbeCaptureSettings = {} ) {
+
+		if ( ( renderer as { isWebGPURenderer?: boolean } | null )?.isWebGPURenderer !== true ) {
+
+			throw new TypeError( `WebGPUProbeCapturer: renderer must be a three.js WebGPURenderer, got ${describeValue( renderer )}.` );
+
+		}
+
+		const { resolution, near, far, type, solidAngle } = checkCaptureSettings( 'WebGPUProbeCapturer', '', settings );
+		this.renderer = renderer;
+		this.resolution = resolution;
+		this.solidAngle = solidAngle;
+		this.cubeRenderTarget = new CubeRenderTarget( resolution, {
+			type: type as TextureDataType, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+		} );
+		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
+		this.projector = new WebGPUSHProjector( renderer );
+		watchDevice( renderer );
+
+	}
+
+	/**
+	 * Captures the scene at each position and writes 27 SH floats per probe into `target` (as
+	 * `ProbeCapturer.capture`). With `renderer.shadowMap.enabled`, every shadow-casting light's map
+	 * is drawn once per call and reused for every face (its `shadow.autoUpdate` / `needsUpdate`
+	 * restored afterwards).
+	 * @throws {Error} when the device or context is lost during the capture, or a probe captures a
+	 * value that is not finite or beyond ±1e30 (`target` then keeps what it had).
+	 */
+	async capture(
+		scene: Scene, positions: ArrayLike<number>, target: Float32Array, options: ProbeCaptureOptions = {}, offset = 0,
+	): Promise<Float32Array> {
+
+		const where = 'WebGPUProbeCapturer.capture';
+		assertScene( where, scene );
+		const count = assertPoints( where, 'positions', positions, 1 );
+		if ( ! ( target instanceof Float32Array ) ) throw new TypeError( `${where}: target must be a Float32Array, got ${describeValue( target )}.` );
+		assertInteger( where, 'offset', offset, 0 );
+		const { exclude } = checkCaptureCall( where, 'options.', options );
+		options = { ...options, exclude };
+		if ( target.length < offset + SH_FLOATS * count ) {
+
+			throw new RangeError( `${where}: target must have room for ${SH_FLOATS * count} floats from offset ${offset}, got length ${target.length}.` );
+
+		}
+
+		if ( this.busy ) throw new Error( `${where}: a capture is already running on this capturer; await it first (or use a second capturer).` );
+		const { renderer, cubeCamera, projector, shadowMaps } = this;
+		this.checkDevice( where );
+		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
+		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
+		const autoClear = renderer.autoClear;
+		const batch = WebGPUSHProjector.batchCapacity( this.resolution );
+		const result = new Float32Array( SH_FLOATS * count );
+		let hidden: Object3D[] = [];
+		let lastYield = now();
+		this.busy = true;
+
+		try {
+
+			shadowMaps.begin( scene, renderer.shadowMap.enabled );
+			hidden = hide( scene, options );
+			scene.updateMatrixWorld();
+			for ( let start = 0; start < count; start += batch ) {
+
+				const size = Math.min( batch, count - start );
+				projector.begin( 'cube', this.resolution, size, { solidAngle: this.solidAngle } );
+				for ( let i = start; i < start + size; i ++ ) {
+
+					this.checkDevice( where );
+					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
+					cubeCamera.updateMatrixWorld();
+					renderer.autoClear = true; // every face must start cleared
+					cubeCamera.update( renderer, scene );
+					projector.add( this.cubeRenderTarget.texture );
+					options.onProgress?.( i + 1, count );
+
+					// A frame for the page now and then (its progress bar), with the hidden objects shown.
+					if ( i + 1 < count && now() - lastYield > 30 ) {
+
+						renderer.autoClear = autoClear;
+						show( hidden );
+						shadowMaps.pause();
+						await nextTask();
+						shadowMaps.resume();
+						hidden = hide( scene, options );
+						lastYield = now();
+
+					}
+
+				}
+
+				this.checkDevice( where );
+				await projector.finish( result, SH_FLOATS * start );
+
+			}
+
+		} catch ( error ) {
+
+			// A read-back on a lost device fails (or the loss shows only now): the named error, with the cause.
+			await nextTask();
+			if ( isDeviceLost( renderer ) ) throw deviceLostError( where, renderer, error );
+			throw error;
+
+		} finally {
+
+			shadowMaps.end();
+			renderer.autoClear = autoClear;
+			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
+			show( hidden );
+			this.busy = false;
+
+		}
+
+		this.checkDevice( where );
+		const bad = firstBeyond( result, SH_LIMIT );
+		if ( bad >= 0 ) {
+
+			throw new Error( `${where}: probe ${Math.floor( bad / SH_FLOATS )} captured ${result[ bad ]}, not a finite value within ±${SH_LIMIT.toPrecision( 3 )}; `
+				+ 'check the scene for NaN, Infinity or huge emissive or light values.' );
+
+		}
+
+		target.set( result, offset );
+		return target;
+
+	}
+
+	private checkDevice( where: string ): void {
+
+		if ( isDeviceLost( this.renderer ) ) throw deviceLostError( where, this.renderer );
+
+	}
+
+	/** Frees the cube render target and the projection's buffers, textures and kernels. */
+	dispose(): void {
+
+		this.cubeRenderTarget.dispose();
+		this.projector.dispose();
+
+	}
+
+}
+
+/** Hides excluded and filtered-out objects; returns them so they can be shown again (as ProbeCapturer). */
+function hide( scene: Scene, options: ProbeCaptureOptions ): Object3D[] {
+
+	const hidden: Object3D[] = [];
+	const hideOne = ( object: Object3D ) => {
+
+		if ( object.visible ) { object.visible = false; hidden.push( object ); }
+
+	};
+
+	if ( options.exclude ) for ( const object of options.exclude ) hideOne( object as Object3D );
+	if ( options.filter ) {
+
+		const filter = options.filter;
+		scene.traverseVisible( ( object ) => { if ( object !== scene && ! filter( object as never ) ) hideOne( object ); } );
+
+	}
+
+	return hidden;
+
+}
+
+function show( objects: Object3D[] ): void {
+
+	for ( const object of objects ) object.visible = true;
+
+}
+
+function now(): number {
+
+	return typeof performance !== 'undefined' ? performance.now() : Date.now();
+
+}
+
+/** Yields to the event loop so a page can repaint a progress bar between probes. */
+function nextTask(): Promise<void> {
+
+	return new Promise( ( resolve ) => setTimeout( resolve, 0 ) );
+
+}
