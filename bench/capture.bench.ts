@@ -79,7 +79,7 @@ export const notes: string[] = [
 	'Scene: the Basic room, 4 × 3 × 4 m — red (−x), green (+x), blue (−z) walls, white floor, ceiling and back wall, MeshStandardMaterial roughness 1 — lit by one PointLight under a glowing ceiling panel. Probes: LightProbeGridWebGL\'s own 4 × 4 × 4 cell-centre positions, for ours too; cube camera near 0.05, far 20 for both.',
 	'1 (projection): 8 cube maps rendered once per size (HalfFloat, NearestFilter: ProbeCapturer\'s defaults) and waited for; then only the projection is timed. Ours: one SHProjector batch = begin + 64 × add of the cube render target (cycling the 8 maps; from 128² on add copies its faces to 2D textures, included) + finish (reduction, gather and the one read-back of 27 floats per probe, which waits for the GPU); figure = batch time ÷ 64, median / min / max over batches after a warm-up batch. Peer: one awaited LightProbeGenerator.fromCubeRenderTarget per run (r187 reads each face with readRenderTargetPixelsAsync — a fence polled every 4 ms by setTimeout — then a CPU loop), after a warm-up call; ours\' batches and the peer\'s runs alternate. The "sync read-back (bench port)" row is a diagnostic: the same loop with synchronous readRenderTargetPixels, to show how much of the peer is polling latency.',
 	'2 (bake): whole bake of the 64 probes, median / min / max over runs after a warm-up of each (a full bake; at 128² the grid warms up on 4 probes). Ours: ProbeCapturer.capture (cube renders + GPU projection + read-back of the SH; it also yields to the event loop with setTimeout(0) about every 30 ms so a page can paint progress — included). Peer: LightProbeGridWebGL.bake, then a 1-texel read of a target drawn from its atlas, so the time includes its GPU work. Check: ours\' L00 vs the grid\'s L00 read back from its atlas, per probe. Diagnostic row: the 64 cube renders alone (what both bakes share, the floor of a bake), timed the same way. Each run times ours, the grid and the cube renders back to back, in an order rotated per run; "paired" = median over runs of ours ÷ the cube renders of the same run.',
-	'3 (frames): four scenes, one per variant, each with the room (walls unlit — MeshBasicMaterial — so only the spheres pay for probe lighting in every variant), the ceiling panel, a PointLight and 500 spheres (radius 0.08 m, 16 × 12 segments) each with its own MeshStandardMaterial, moving on the same Lissajous paths through the probe hull. none: no probe. global: one THREE.LightProbe holding the volume\'s SH at the room centre. grid: LightProbeGridWebGL baked at 32², in the scene. ours: LightProbeVolume over the same 64 probes captured at 32², the spheres added with volume.add (each sphere\'s own material patched in place — no clones; one shared program). Per frame timed: [volume.update(), ours only] + renderer.render + a 1-pixel canvas readPixels (GPU sync); moving the spheres is not timed. Frames interleave: each animation step renders one frame of every variant, in an order rotated per step, so all four see the same machine load. 6 rounds of 2 warm-up + 15 timed steps; a round\'s figure is the median of its 15 frames; figure = median of the round medians, min / max of the round medians.',
+	'3 (frames): five scenes, one per variant, each with the room (walls unlit — MeshBasicMaterial — so only the spheres pay for probe lighting in every variant), the ceiling panel, a PointLight and 500 spheres (radius 0.08 m, 16 × 12 segments) each with its own MeshStandardMaterial, moving on the same Lissajous paths through the probe hull. none: no probe. global: one THREE.LightProbe holding the volume\'s SH at the room centre. grid: LightProbeGridWebGL baked at 32², in the scene. ours: LightProbeVolume over the same 64 probes captured at 32², the spheres added with volume.add (each sphere\'s own material patched in place — no clones; one shared program). ours with gradient probes: a second LightProbeVolume with the same positions and SH made gradient probes by setGradients (random gradients, each float uniform in ±|L00 of its channel| / 4 m, the room\'s largest side), its own 500 spheres; the "paired" figure is its frame ÷ ours\' frame of the same step (issue 14\'s target ≤ 1.1×). Per frame timed: [volume.update(), ours and ours with gradients only] + renderer.render + a 1-pixel canvas readPixels (GPU sync); moving the spheres is not timed. Frames interleave: each animation step renders one frame of every variant, in an order rotated per step, so all five see the same machine load. 6 rounds of 2 warm-up + 15 timed steps; a round\'s figure is the median of its 15 frames; figure = median of the round medians, min / max of the round medians.',
 ];
 
 type Browser = import( 'puppeteer-core' ).Browser;
@@ -431,29 +431,32 @@ async function bake( page: Page, rows: BenchRow[], log: ( message: string ) => v
 // ---------------------------------------------------------------------------------------------
 // 3. Frames
 
-type Variant = 'none' | 'global' | 'grid' | 'ours';
+type Variant = 'none' | 'global' | 'grid' | 'ours' | 'oursGradients';
 
 async function frames( page: Page, rows: BenchRow[], log: ( message: string ) => void ): Promise<void> {
 
 	const plan = PLAN.frames;
 	log( `frames: capturing the volume and baking the grid at ${plan.cubeSize}², ${plan.spheres} spheres per variant` );
 	const setup = await call( page, 'setupFrames', plan.spheres, plan.cubeSize );
-	const variants: Variant[] = [ 'none', 'global', 'grid', 'ours' ];
+	const variants: Variant[] = [ 'none', 'global', 'grid', 'ours', 'oursGradients' ];
 	const stats: Record<string, { mean: number[], drawCalls: number, triangles: number }> = {};
 	for ( const variant of variants ) stats[ variant ] = await call( page, 'frameStats', variant );
 
 	// Rounds of interleaved frames (each step: one frame of every variant, order rotating).
-	const medians: Record<Variant, number[]> = { none: [], global: [], grid: [], ours: [] };
+	const medians: Record<Variant, number[]> = { none: [], global: [], grid: [], ours: [], oursGradients: [] };
 	const pairs: number[] = [], gridPairs: number[] = [], globalPairs: number[] = [], updates: number[] = [];
+	const gradientPairs: number[] = [], gradientUpdates: number[] = [];
 	for ( let round = 0; round < plan.rounds; round ++ ) {
 
 		const times = await call( page, 'runFrames', plan.warmUp, plan.frames );
 		for ( const v of variants ) medians[ v ].push( summarize( times[ v ] ).median );
 		updates.push( ...times.oursUpdate );
+		gradientUpdates.push( ...times.gradientUpdate );
 		// Per step ratios: the frames of one step ran back to back, under the same load.
 		times.ours.forEach( ( t, i ) => {
 
 			pairs.push( t / times.global[ i ] );
+			gradientPairs.push( times.oursGradients[ i ] / t );
 			globalPairs.push( times.global[ i ] / times.none[ i ] );
 			gridPairs.push( times.grid[ i ] / times.none[ i ] );
 
@@ -479,7 +482,13 @@ async function frames( page: Page, rows: BenchRow[], log: ( message: string ) =>
 		output: `paired ${paired( pairs )}×; ${( s.ours.median / s.none.median ).toFixed( 2 )}× no probe; update() ${summarize( updates ).median.toFixed( 2 )} ms of it`,
 		targets: [ { text: '≤ 1.05× global LightProbe', met: oursRatio <= 1.05 } ],
 	} ) );
-	notes.push( `Frames (3): ${setup.sphereTriangles} triangles per sphere, ${stats.none.drawCalls} draw calls per frame (spheres outside the view are culled), ${setup.tetrahedra} tetrahedra in the volume, ${setup.programs} shader programs in the renderer after compiling the four scenes. "paired": median over all timed steps of the ratio of two variants' frames rendered back to back in the same step (robust to load changes). Mean canvas RGB per variant (Check column) shows the probes light the spheres: ours close to the global probe and the grid, no probe darker.` );
+	const gradientRatio = summarize( gradientPairs ).median;
+	rows.push( row( label, 'ours with gradient probes: update() + render', s.oursGradients, {
+		status: seen( 'oursGradients' ), peer: 'ours without gradients', ratio: s.oursGradients.median / s.ours.median,
+		output: `paired ${gradientRatio.toFixed( 3 )}×; update() ${summarize( gradientUpdates ).median.toFixed( 2 )} ms of it`,
+		targets: [ { text: '≤ 1.1× without gradients (paired)', met: gradientRatio <= 1.1 } ],
+	} ) );
+	notes.push( `Frames (3): ${setup.sphereTriangles} triangles per sphere, ${stats.none.drawCalls} draw calls per frame (spheres outside the view are culled), ${setup.tetrahedra} tetrahedra in the volume, ${setup.programs} shader programs in the renderer after compiling the five scenes. "paired": median over all timed steps of the ratio of two variants' frames rendered back to back in the same step (robust to load changes). Mean canvas RGB per variant (Check column) shows the probes light the spheres: ours close to the global probe and the grid, no probe darker.` );
 
 }
 

@@ -26,9 +26,9 @@ const BENCH_DIR = fileURLToPath( new URL( '.', import.meta.url ) );
 const QUICK = process.env.BENCH_QUICK === '1';
 const ONLY = ( process.env.BENCH_FROMSCENE ?? '' ).split( ',' ).filter( Boolean );
 
-/** Cube size of every capture, and timed runs (after a warm-up of each) per level. */
+/** Cube size of every capture, and timed runs (after a warm-up) per level. */
 const RESOLUTION = 32;
-const RUNS: Record<string, number> = { basic: QUICK ? 1 : 5, sponza: QUICK ? 1 : 3 };
+const RUNS: Record<string, number> = { basic: QUICK ? 1 : 5, sponza: QUICK ? 1 : 2 };
 
 /** Issue 14's target: fromScene ≤ 1.3× the capture of its candidates alone. */
 const TARGET = 1.3;
@@ -36,7 +36,7 @@ const TARGET = 1.3;
 export const title = `LightProbeVolume.fromScene vs capturing its candidates alone, headless Chromium, ${RESOLUTION}² (ms, lower is better)`;
 
 export const notes: string[] = [
-	`Levels as on the demo pages: Basic (scenes/basic.ts, budget 12, reachableFrom the middle of the room at 1.6 m, near 0.02 / far 20) and Sponza (scenes/sponza.ts with its sun's shadow map and sky dome, budget 86, reachableFrom (−9, 1.6, −1.4) on the fox's path, bounds the atrium's box without the sky, near 0.05 / far 400); every capture at ${RESOLUTION}², fromScene with its defaults (fit with λ by cross-validation, swap passes). "capture alone" = new LightProbeVolume( { positions: candidates } ) and its capture with the same options, the candidates being placeCandidates' with fromScene's settings (the Check column compares the counts). Each run times both back to back, order rotated per run, after a warm-up of each; figure = median over runs; "paired" = median of the per-run ratios.`,
+	`Levels as on the demo pages: Basic (scenes/basic.ts, budget 12, reachableFrom the middle of the room at 1.6 m, near 0.02 / far 20) and Sponza (scenes/sponza.ts with its sun's shadow map and sky dome, budget 86, reachableFrom (−9, 1.6, −1.4) on the fox's path, bounds the atrium's box without the sky, near 0.05 / far 400); every capture at ${RESOLUTION}², fromScene with its defaults (fit with λ by cross-validation, swap passes). "capture alone" = new LightProbeVolume( { positions: candidates } ) and its capture with the same options, the candidates being placeCandidates' with fromScene's settings (the Check column compares the counts). Each run times both back to back, order rotated per run, after a warm-up (a fromScene of 4 probes from about 8 grid candidates: the level's shaders compiled, untimed); figure = median over runs; "paired" = median of the per-run ratios. Sponza's 770 candidates take minutes per capture in SwiftShader: BENCH_FROMSCENE=basic leaves it out.`,
 	'Stages (fromScene\'s onProgress: each stage from its first report to the next stage\'s): setup (argument checks), candidates (gathering the level\'s triangles, placement with the open-space tests), capture, reduce (reduceProbes with fit and swaps), fit (VolumeFit, λ by cross-validation). Parts of the candidates stage, timed alone on the same level: gathering the triangles, the BVH, the inside test\'s closed shells, the reachability flood (ReachableSpace over the flood\'s box), and placeCandidates whole (which builds its own BVH, shells and flood).',
 ];
 
@@ -121,8 +121,7 @@ export async function run( log: ( message: string ) => void ): Promise<BenchRow[
 async function level( page: Page, name: string, label: string, log: ( message: string ) => void ): Promise<BenchRow[]> {
 
 	log( `${label}: warm-up` );
-	await call( page, 'fromScene', name, RESOLUTION, true );
-	await call( page, 'captureCandidates', name, RESOLUTION );
+	await call( page, 'warmUp', name, RESOLUTION );
 	const totals: number[] = [], alone: number[] = [], pairs: number[] = [];
 	const stages: Record<string, number[]> = {};
 	const parts: Record<string, number[]> = {};

@@ -351,13 +351,13 @@ function bakePeer( cubeSize: number, count = PROBES ): { ms: number, l00: number
 // ---------------------------------------------------------------------------------------------
 // 3. Frame time with moving probe-lit spheres
 
-const VARIANTS = [ 'none', 'global', 'grid', 'ours' ] as const;
+const VARIANTS = [ 'none', 'global', 'grid', 'ours', 'oursGradients' ] as const;
 type Variant = typeof VARIANTS[ number ];
 
-/** One scene per variant, so frames of all four can alternate with no state switching between them. */
+/** One scene per variant, so frames of all variants can alternate with no state switching between them. */
 let frameState: {
 	scenes: Record<Variant, THREE.Scene>, spheres: Record<Variant, THREE.Mesh[]>,
-	volume: LightProbeVolume, phases: Float32Array, step: number,
+	volume: LightProbeVolume, gradientVolume: LightProbeVolume, phases: Float32Array, step: number,
 } | null = null;
 
 /**
@@ -366,7 +366,9 @@ let frameState: {
  * small spheres, each with its own MeshStandardMaterial. none: nothing more; global: a LightProbe
  * holding the volume's SH at the room's centre; grid: a LightProbeGridWebGL baked at `cubeSize`;
  * ours: the spheres added to a LightProbeVolume over the 64 grid positions captured at
- * `cubeSize` (each sphere's own material is patched in place, so no clones).
+ * `cubeSize` (each sphere's own material is patched in place, so no clones); oursGradients: the
+ * same, in a second volume with the same SH made gradient probes (`setGradients`, random
+ * gradients bounded so that across the room each SH float changes by at most its L00's size).
  */
 async function setupFrames( count: number, cubeSize: number ): Promise<{ sphereTriangles: number, tetrahedra: number, programs: number }> {
 
@@ -375,6 +377,8 @@ async function setupFrames( count: number, cubeSize: number ): Promise<{ sphereT
 	await volume.capture( renderer, scene, { resolution: cubeSize, near: NEAR, far: FAR } );
 	const grid = makeGrid();
 	grid.bake( renderer, scene, { cubemapSize: cubeSize, near: NEAR, far: FAR } );
+	const gradientVolume = new LightProbeVolume( { positions: gridPositions, sh: volume.sh } );
+	gradientVolume.setGradients( randomGradients( volume.sh, 12345 ) );
 	const globalProbe = new THREE.LightProbe();
 	globalProbe.sh.fromArray( volume.sample( [ room.position.x, room.position.y, room.position.z ] ) );
 
@@ -407,13 +411,38 @@ async function setupFrames( count: number, cubeSize: number ): Promise<{ sphereT
 
 	}
 
-	frameState = { scenes, spheres, volume, phases, step: 0 };
+	frameState = { scenes, spheres, volume, gradientVolume, phases, step: 0 };
 	for ( const variant of VARIANTS ) moveSpheres( variant, 0 );
 	for ( const sphere of spheres.ours ) volume.add( sphere );
+	for ( const sphere of spheres.oursGradients ) gradientVolume.add( sphere );
 	for ( const variant of VARIANTS ) renderer.compile( scenes[ variant ], camera );
 
 	const triangles = geometry.index ? geometry.index.count / 3 : 0;
 	return { sphereTriangles: triangles, tetrahedra: volume.interpolator.cellCount, programs: renderer.info.programs?.length ?? 0 };
+
+}
+
+/**
+ * 81 gradient floats per probe for `sh` (27 per probe): uniform in ±(|L00| of the probe's channel)
+ * / (the room's largest side), so the gradient term stays within about one L00 across the room.
+ */
+function randomGradients( sh: Float32Array, seed: number ): Float32Array {
+
+	const count = sh.length / 27, out = new Float32Array( 81 * count );
+	const side = Math.max( size.x, size.y, size.z );
+	for ( let p = 0; p < count; p ++ ) {
+
+		for ( let i = 0; i < 81; i ++ ) {
+
+			seed = ( seed * 16807 ) % 2147483647;
+			const l00 = Math.abs( sh[ 27 * p + ( i % 27 ) % 3 ] );
+			out[ 81 * p + i ] = ( 2 * seed / 2147483647 - 1 ) * l00 / side;
+
+		}
+
+	}
+
+	return out;
 
 }
 
@@ -444,9 +473,9 @@ function frame( variant: Variant ): number {
 	const state = frameState!;
 	moveSpheres( variant, state.step );
 	const start = performance.now();
-	if ( variant === 'ours' ) {
+	if ( variant === 'ours' || variant === 'oursGradients' ) {
 
-		state.volume.update();
+		( variant === 'ours' ? state.volume : state.gradientVolume ).update();
 		lastUpdateMs = performance.now() - start;
 
 	}
@@ -459,13 +488,15 @@ function frame( variant: Variant ): number {
 
 /**
  * `warmUp` untimed animation steps, then `frames` timed ones; at each step every variant renders
- * one frame, in an order rotated by the step, so all four see the same machine load. Moving the
+ * one frame, in an order rotated by the step, so all variants see the same machine load. Moving the
  * spheres is not timed. Returns the frame times per variant, and ours' volume.update() part.
  */
-function runFrames( warmUp: number, frames: number ): Record<Variant | 'oursUpdate', number[]> {
+function runFrames( warmUp: number, frames: number ): Record<Variant | 'oursUpdate' | 'gradientUpdate', number[]> {
 
 	const state = frameState!;
-	const times = { none: [], global: [], grid: [], ours: [], oursUpdate: [] } as Record<Variant | 'oursUpdate', number[]>;
+	const times = {
+		none: [], global: [], grid: [], ours: [], oursGradients: [], oursUpdate: [], gradientUpdate: [],
+	} as Record<Variant | 'oursUpdate' | 'gradientUpdate', number[]>;
 	for ( let f = 0; f < warmUp + frames; f ++ ) {
 
 		const step = state.step ++;
@@ -476,6 +507,7 @@ function runFrames( warmUp: number, frames: number ): Record<Variant | 'oursUpda
 			if ( f < warmUp ) continue;
 			times[ variant ].push( ms );
 			if ( variant === 'ours' ) times.oursUpdate.push( lastUpdateMs );
+			if ( variant === 'oursGradients' ) times.gradientUpdate.push( lastUpdateMs );
 
 		}
 

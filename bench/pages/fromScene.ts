@@ -92,6 +92,19 @@ function optionsOf( entry: Level, resolution: number, fit: boolean, onProgress?:
 
 }
 
+/**
+ * A small fromScene and capture on the level (4 probes of about 8 grid candidates), untimed: it
+ * compiles the level's shaders and draws its shadow maps once, so the timed runs do not pay for that.
+ */
+async function warmUp( name: string, resolution: number ): Promise<void> {
+
+	const entry = level( name );
+	const options = { ...optionsOf( entry, resolution, true ), budget: 4, candidates: 8 };
+	const volume = await LightProbeVolume.fromScene( renderer, entry.scene, options );
+	volume.dispose();
+
+}
+
 /** One fromScene run: total time and per stage (from the first report of a stage to the next stage's first). */
 async function fromScene( name: string, resolution: number, fit: boolean ): Promise<{
 	ms: number; stages: Record<string, number>; probes: number; candidates: number;
@@ -197,6 +210,6 @@ function info(): { renderer: string; three: string } {
 
 }
 
-const api = { loadBasic, loadSponza, fromScene, captureCandidates, placementParts, info };
+const api = { loadBasic, loadSponza, warmUp, fromScene, captureCandidates, placementParts, info };
 Object.assign( window, { fromSceneBench: api, fromSceneBenchReady: true } );
 export type FromSceneBenchApi = typeof api;
