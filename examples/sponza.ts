@@ -15,7 +15,8 @@ import { Viewer } from './common/Viewer.js';
 // probes at their centre (in the courtyard air); per vertex or through a 3D SH texture over their
 // bounds they follow the probes across the courtyard and under the arcades. "ambient" is the scene
 // as built: a flat emissive stand-in for indirect light, which the probe modes replace.
-// ?floor=ambient|object|vertex|texture selects one.
+// ?floor=ambient|object|vertex|texture selects one. The automatic layout: ?budget=N (default 86)
+// and ?candidates=M (grid candidates, default 8 per probe).
 
 const FLOOR_MODES = [ 'ambient', 'object', 'vertex', 'texture' ] as const;
 type FloorMode = typeof FLOOR_MODES[ number ];
@@ -36,6 +37,9 @@ async function init(): Promise<void> {
 	const floor = scene.getObjectByName( 'floors' ) as THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial> | undefined;
 	let floorLighting: AddOptions | null = null;
 
+	// The automatic layout's budget and candidate count (?budget=N&candidates=M; tests take small ones).
+	const automaticBudget = Math.max( 4, Math.round( Number( viewer.query.params.get( 'budget' ) ?? 86 ) ) || 86 );
+	const automaticCandidates = Math.max( 8, Math.round( Number( viewer.query.params.get( 'candidates' ) ?? 8 * automaticBudget ) ) || 8 * automaticBudget );
 	const demo = new ProbeVolumeDemo( viewer, objects, {
 		layouts: sponzaLayouts,
 		// The probes of a layout, tetrahedralized (the 432-probe grid also trilinearly).
@@ -60,6 +64,17 @@ async function init(): Promise<void> {
 			if ( bounces > 0 ) await captureBounces( volume, renderer, scene, { ...captureOptions, bounces } );
 			else await volume.capture( renderer, scene, captureOptions );
 
+		},
+		// "automatic layout (budget 86)": LightProbeVolume.fromScene picks 86 probes (the hand-made
+		// layout's count; ?budget=N another) in the atrium's open space reachable from the fox's path,
+		// placing candidates in the atrium's box (not the sky dome around it) and capturing its ~770
+		// candidates (?candidates=N grid cells, default 8 per probe) at 16² at most, then the chosen
+		// ones at the panel's resolution. "fit to dense captures" fits a hand-made or grid layout to a
+		// grid of captures 2.5 m apart.
+		automatic: {
+			budget: automaticBudget, candidates: automaticCandidates, reachableFrom: [ - 9, 1.6, - 1.4 ], fitSpacing: 2.5,
+			capture: { near: 0.05, far: 400 }, bounds: { min: [ - 17.4, - 0.9, - 7.8 ], max: [ 17.42, 15.66, 7.81 ] },
+			candidateResolution: 16,
 		},
 	} );
 	await demo.start();

@@ -1,4 +1,4 @@
-import type * as THREE from 'three';
+import * as THREE from 'three';
 import { LightProbeVolume } from 'three-capture-lighting';
 import { formatTimeLeft } from './CaptureProgress.js';
 import type { ProbeLayout } from './layouts.js';
@@ -15,6 +15,19 @@ export interface AutomaticSetup {
 	fitSpacing: number;
 	/** The page's own capture settings (near, far) for fromScene's captures. */
 	capture: { near?: number; far?: number };
+
+	/** The box to place candidates in (fromScene's `bounds`; default the level's box): a level inside a sky dome gives its own. */
+	bounds?: { min: number[]; max: number[] };
+
+	/** About how many grid candidates (fromScene's `candidates`; default max( 256, 8 × budget )). */
+	candidates?: number;
+
+	/**
+	 * The largest cube size of the candidates' capture (fromScene's `candidateResolution` is the
+	 * smaller of this and the panel's resolution; default: the panel's): a smaller one captures the
+	 * many candidates faster, then fromScene captures the chosen probes again at the panel's.
+	 */
+	candidateResolution?: number;
 
 }
 
@@ -48,7 +61,10 @@ export class AutomaticLayout {
 	async create( fit: boolean, hidden: THREE.Object3D[] ): Promise<{ volume: LightProbeVolume; layout: ProbeLayout }> {
 
 		const { overlay, settings, renderer, scene } = this.viewer;
-		const { budget, reachableFrom, capture } = this.setup;
+		const { budget, reachableFrom, capture, candidates } = this.setup;
+		const box = this.setup.bounds;
+		const bounds = box && new THREE.Box3( new THREE.Vector3().fromArray( box.min ), new THREE.Vector3().fromArray( box.max ) );
+		const candidateResolution = Math.min( this.setup.candidateResolution ?? Infinity, settings.resolution );
 		let started = 0;
 		const onProgress = ( { stage, done, total }: { stage: string; done: number; total: number } ) => {
 
@@ -62,14 +78,16 @@ export class AutomaticLayout {
 			// The first candidate also compiles the shaders: the rate is measured from there on.
 			if ( done <= 1 ) started = performance.now();
 			const left = done > 1 ? ( performance.now() - started ) / ( done - 1 ) * ( total - done ) : NaN;
-			overlay.progress( `capturing candidate ${done} / ${total} at ${settings.resolution}² — ${formatTimeLeft( left )}`, done / total );
+			const what = stage === 'capture' ? `candidate ${done} / ${total} at ${candidateResolution}²` : `probe ${done} / ${total} at ${settings.resolution}²`;
+			overlay.progress( `capturing ${what} — ${formatTimeLeft( left )}`, done / total );
 
 		};
 
 		try {
 
 			const volume = await LightProbeVolume.fromScene( renderer, scene, {
-				budget, reachableFrom, fit, resolution: settings.resolution, exclude: hidden, capture, onProgress,
+				budget, reachableFrom, fit, resolution: settings.resolution, candidateResolution, bounds, candidates, exclude: hidden,
+				capture, onProgress,
 			} );
 			const layout: ProbeLayout = { name: this.name, positions: Array.from( volume.positions ) };
 			return { volume, layout };

@@ -1,6 +1,7 @@
+import { existsSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer-core';
-import { browserSkipReason, startBrowser, type BrowserSession } from '../helpers/browser.js';
+import { ASSETS, browserSkipReason, startBrowser, type BrowserSession } from '../helpers/browser.js';
 import { compareWithGolden, readPNG, writePNG } from '../helpers/images.js';
 
 /*
@@ -13,6 +14,11 @@ import { compareWithGolden, readPNG, writePNG } from '../helpers/images.js';
  *   (the probes' box 3.6 × 2.6 × 3.6 m in 9 × 6 × 9 cells — 2.6 / 0.4 rounds to 6 in floating
  *   point, 2.8 − 0.2 being 2.5999… — all inside the hull, none within the bulb's clearance), and
  *   the picture changes from the captured grid's.
+ *
+ * - Sponza's toggles (when its assets are there): the label "automatic layout (budget 86)", and
+ *   fromScene on the page itself with a small budget and few candidates (?budget=6&candidates=48 at
+ *   8²; the page's 86 probes from ~770 candidates take minutes in SwiftShader): 6 probes inside the
+ *   atrium's box, fitted with fit=1.
  *
  * Golden test/golden/pages/basic-automatic.png (auto=1&fit=1, t = 4 s, probe markers shown),
  * looked at before it was accepted: the Basic room as in basic.png — red wall left, blue at the
@@ -29,11 +35,13 @@ const FIXED = 'resolution=16&hide=gui&t=4';
 interface Demo { ready: boolean; error: string; probes: number }
 interface Fit { samples: number; gradients: boolean; lambda: number; crossValidationError: number | null; source?: string }
 /** What the page leaves on window for tests (examples/common/testHooks.ts), as far as these tests read it. */
-interface App { __demoApp: { volume: { fitSettings: Fit | null; count: number; metadata: string } } }
+interface App { __demoApp: { volume: { fitSettings: Fit | null; count: number; metadata: string; positions: Float64Array } } }
 
-async function open( session: BrowserSession, query: string ): Promise<{ page: Page; errors: string[]; demo: Demo }> {
+async function open(
+	session: BrowserSession, query: string, path = `examples/basic.html?${FIXED}`,
+): Promise<{ page: Page; errors: string[]; demo: Demo }> {
 
-	const { page, errors } = await session.open( `examples/basic.html?${FIXED}&${query}`, SIZE );
+	const { page, errors } = await session.open( `${path}&${query}`, SIZE );
 	await page.waitForFunction( () => {
 
 		const demo = ( window as unknown as { __demo?: Demo } ).__demo;
@@ -45,16 +53,24 @@ async function open( session: BrowserSession, query: string ): Promise<{ page: P
 
 }
 
-/** The volume's fit record, probe count and metadata, and the status text. */
-async function state( page: Page ): Promise<{ fit: Fit | null; count: number; metadata: string; status: string }> {
+/** The volume's fit record, probe count, positions and metadata, and the status text. */
+async function state( page: Page ): Promise<{ fit: Fit | null; count: number; metadata: string; status: string; positions: number[] }> {
 
 	return page.evaluate( () => {
 
 		const volume = ( window as unknown as App ).__demoApp.volume;
 		const status = document.getElementById( 'status' )?.textContent ?? '';
-		return { fit: volume.fitSettings, count: volume.count, metadata: volume.metadata, status };
+		const positions = Array.from( volume.positions );
+		return { fit: volume.fitSettings, count: volume.count, metadata: volume.metadata, status, positions };
 
 	} );
+
+}
+
+/** The names of the panel's controllers (lil-gui). */
+function controllerNames( page: Page ): Promise<string[]> {
+
+	return page.evaluate( () => Array.from( document.querySelectorAll( '.lil-controller .lil-name' ) ).map( ( e ) => e.textContent ?? '' ) );
 
 }
 
@@ -174,6 +190,49 @@ describe.skipIf( browserSkipReason !== '' )( `Basic page: automatic layout and f
 		await wait( 13, true );
 		expect( errors ).toEqual( [] );
 		await page.close();
+
+	} );
+
+} );
+
+const hasSponza = existsSync( `${ASSETS}/sponza/sponza.obj` );
+const sponzaSkip = browserSkipReason || ( hasSponza ? '' : 'Sponza assets missing (see README "Assets")' );
+
+describe.skipIf( sponzaSkip !== '' )( `Sponza page: automatic layout and fit toggles${sponzaSkip ? ' — SKIPPED: ' + sponzaSkip : ''}`, () => {
+
+	let session: BrowserSession;
+	beforeAll( async () => { session = await startBrowser(); }, 60_000 );
+	afterAll( async () => { await session?.close(); } );
+
+	it( 'the panel offers "automatic layout (budget 86)" and "fit to dense captures"; auto=1&fit=1 with budget=6: 6 fitted probes in the atrium', async () => {
+
+		const { page, errors, demo } = await open( session, 'auto=1&fit=1&budget=6&candidates=48', 'examples/sponza.html?resolution=8&t=4&character=0' );
+		expect( demo.error ).toBe( '' );
+		expect( errors ).toEqual( [] );
+		const names = await controllerNames( page );
+		expect( names ).toContain( 'automatic layout (budget 6)' );
+		expect( names ).toContain( 'fit to dense captures' );
+		const { count, fit, status, positions } = await state( page );
+		expect( count ).toBe( 6 );
+		expect( fit?.source ).toMatch( /^the \d+ candidates of fromScene, captured at 8²$/ );
+		expect( status ).toContain( 'automatic layout (budget 6)' );
+		expect( status ).toMatch( /fitted to \d+ dense captures/ );
+		// Inside the atrium's box (the page's bounds), not out in the sky dome around it (radius 200).
+		for ( let i = 0; i < positions.length; i += 3 ) {
+
+			expect( Math.abs( positions[ i ] ), `probe ${i / 3} x` ).toBeLessThan( 17.5 );
+			expect( positions[ i + 1 ], `probe ${i / 3} y` ).toBeGreaterThan( - 1 );
+			expect( positions[ i + 1 ], `probe ${i / 3} y` ).toBeLessThan( 15.7 );
+			expect( Math.abs( positions[ i + 2 ] ), `probe ${i / 3} z` ).toBeLessThan( 7.9 );
+
+		}
+
+		await page.close();
+		// The page's own budget in the label when none is asked for (not waiting for its first capture).
+		const plain = await session.open( 'examples/sponza.html?resolution=4&t=4&character=0', SIZE );
+		await plain.page.waitForFunction( () => Array.from( document.querySelectorAll( '.lil-controller .lil-name' ) )
+			.some( ( element ) => element.textContent === 'automatic layout (budget 86)' ), { timeout: 300_000 } );
+		await plain.page.close();
 
 	} );
 
