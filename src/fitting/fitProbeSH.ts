@@ -120,16 +120,33 @@ export function fitProbeSHUnmeasured(
 
 }
 
+/**
+ * {@link fitProbeSHUnmeasured}, also returning the fit's sample design (every sample's blending
+ * probes and weights), so the caller need not locate the samples again. Not public.
+ */
+export function fitProbeSHWithDesign(
+	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
+	samples: PreparedFitSamples, options?: FitProbeSHOptions,
+): { result: FitProbeSHResult; design: SampleDesign } {
+
+	const out: { design?: SampleDesign } = {};
+	const result = fitProbes( interpolator, probePositions, probeSH, samples, options, samples, out );
+	return { result, design: out.design! };
+
+}
+
 /** {@link fitProbeSH}; over `prepared` samples (then `fitError` is left NaN) when given. */
 function fitProbes(
 	interpolator: ProbeInterpolator, probePositions: ArrayLike<number>, probeSH: ArrayLike<number>,
 	samples: FitSamples, options: FitProbeSHOptions | undefined, prepared: PreparedFitSamples | null,
+	designOut?: { design?: SampleDesign },
 ): FitProbeSHResult {
 
 	const where = 'fitProbeSH';
 	const checked = checkFitArguments( where, interpolator, probePositions, probeSH, samples, options, prepared ?? undefined );
 	const { positions, sh: truth, weights, gradients } = checked;
 	const design = buildSampleDesign( where, interpolator, probePositions, positions, weights, gradients, prepared?.order );
+	if ( designOut ) designOut.design = design;
 	const { stride, localToGlobal } = design;
 	const first = new Int32Array( stride * localToGlobal.length );
 	for ( let r = 0; r < first.length; r ++ ) first[ r ] = stride * design.firstNeighbour[ Math.floor( r / stride ) ];

@@ -1,5 +1,6 @@
 import type { DynamicTetrahedralization } from '../tetrahedra/DynamicTetrahedralization.js';
 import type { ProbeInterpolator } from '../interpolation/ProbeInterpolator.js';
+import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
 import type { PointGrid } from './PointGrid.js';
 import type { FittedLayout } from './refitLayout.js';
 
@@ -129,16 +130,20 @@ export class ChangedPoints {
 	): number {
 
 		const indices = this.indices, values = this.values, probes = this.cellProbes, slots = layout.slots;
+		const kept = interpolator instanceof TetrahedralMesh ? keptCells( interpolator, moved, layout.order.length ) : null;
 		let hint = - 1;
 		this.count = 0;
 		for ( let v = 0; v < visitOrder.length; v ++ ) {
 
 			const j = visitOrder[ v ];
+			// An inner point whose tetrahedron (all 4 weights > 0) is still a cell keeps its weights.
+			const o = 4 * j;
+			const inner = kept !== null && layout.outside[ j ] === 0;
+			if ( inner && kept.has( cellKey( slots[ o ], slots[ o + 1 ], slots[ o + 2 ], slots[ o + 3 ] ) ) ) continue;
 			values.fill( 0 );
 			hint = interpolator.interpolate( positions[ 3 * j ], positions[ 3 * j + 1 ], positions[ 3 * j + 2 ], indices, values, hint );
 			for ( let s = 0; s < 4; s ++ ) probes[ s ] = indices[ s ];
 			this.record( j, probes, values[ 0 ], values[ 1 ], values[ 2 ], values[ 3 ] );
-			const o = 4 * j;
 			const usesMoved = moved >= 0
 				&& ( slots[ o ] === moved || slots[ o + 1 ] === moved || slots[ o + 2 ] === moved || slots[ o + 3 ] === moved );
 			if ( usesMoved || ! this.sameAsLayout( layout, j ) ) this.count ++;
@@ -218,5 +223,40 @@ function writeCellInverse( p: Float64Array, tetrahedra: Uint32Array, t: number, 
 	out[ 3 ] = c10 * inverse; out[ 4 ] = c11 * inverse; out[ 5 ] = c12 * inverse;
 	out[ 6 ] = c20 * inverse; out[ 7 ] = c21 * inverse; out[ 8 ] = c22 * inverse;
 	out[ 9 ] = p[ d ]; out[ 10 ] = p[ d + 1 ]; out[ 11 ] = p[ d + 2 ];
+
+}
+
+/** A key for the tetrahedron of 4 local probes (any order; −1 in any slot: no key). */
+function cellKey( a: number, b: number, c: number, d: number ): number {
+
+	if ( a < 0 || b < 0 || c < 0 || d < 0 ) return - 1;
+	// Sorting network for 4, then 13 bits per probe (layouts of up to 8192 probes; larger ones get no keys).
+	let t: number;
+	if ( a > b ) { t = a; a = b; b = t; }
+	if ( c > d ) { t = c; c = d; d = t; }
+	if ( a > c ) { t = a; a = c; c = t; }
+	if ( b > d ) { t = b; b = d; d = t; }
+	if ( b > c ) { t = b; b = c; c = t; }
+	if ( d >= 8192 ) return - 1;
+	return ( ( a * 8192 + b ) * 8192 + c ) * 8192 + d;
+
+}
+
+/** The cells of `mesh` that the layout's mesh may share: those without the edited probe (`moved`, or the inserted one, `size`). */
+function keptCells( mesh: TetrahedralMesh, moved: number, size: number ): Set<number> {
+
+	const edited = moved >= 0 ? moved : size;
+	const out = new Set<number>();
+	const t = mesh.tetrahedra;
+	for ( let k = 0; k < mesh.cellCount; k ++ ) {
+
+		const a = t[ 4 * k ], b = t[ 4 * k + 1 ], c = t[ 4 * k + 2 ], d = t[ 4 * k + 3 ];
+		if ( a === edited || b === edited || c === edited || d === edited ) continue;
+		const key = cellKey( a, b, c, d );
+		if ( key >= 0 ) out.add( key );
+
+	}
+
+	return out;
 
 }

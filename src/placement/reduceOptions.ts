@@ -8,6 +8,9 @@ import type { ReduceProbesOptions } from './reduceProbes.js';
 /** Swap passes run by default when `fit` is on and `swaps` is not given (or `true`). */
 export const DEFAULT_SWAP_PASSES = 2;
 
+/** Replacements tried per probe and swap pass by default: its 4 nearest free candidates and the 2 predicted worst. */
+export const DEFAULT_SWAP_TRIALS = 6;
+
 const FIT_KEYS = [ 'gradients', 'lambda', 'gradientLambda', 'nonNegative' ];
 
 /** How `reduceProbes` re-fits the subset, read from `options.fit`. */
@@ -54,6 +57,8 @@ export interface ReduceSettings {
 	required: number[];
 	fit: FitSettings | null;
 	swapPasses: number;
+	/** Replacements tried per probe and swap pass. */
+	swapTrials: number;
 	fitSet: FitSet;
 
 }
@@ -109,9 +114,11 @@ export function readReduceOptions(
 
 	}
 
+	const swapTrials = options.swapTrials ?? DEFAULT_SWAP_TRIALS;
+	assertInteger( where, 'options.swapTrials', swapTrials, 1 );
 	return {
 		targetCount, targetError, statistic, seed, strategy, trials, normals, directions, required, fit,
-		swapPasses: readSwaps( where, options.swaps, fit !== null ),
+		swapTrials, swapPasses: readSwaps( where, options.swaps, fit !== null ),
 		fitSet: readFitSet( where, positions, sh, count, options ),
 	};
 

@@ -61,11 +61,18 @@ export interface ReduceProbesOptions {
 	fit?: boolean | { gradients?: boolean; lambda?: number | 'auto'; gradientLambda?: number | 'auto'; nonNegative?: boolean };
 
 	/**
-	 * Swap passes after the insertions (only with `fit`): each probe is tried at a few other
-	 * candidates, and moved when the fitted error drops. `true` or a number of passes at most (an
-	 * integer ≥ 0); default 2 passes with `fit`.
+	 * Swap passes after the insertions (only with `fit`): each probe (starting-set ones included,
+	 * not `keep` ones) is tried at a few other candidates (`swapTrials`), and moved when the fitted
+	 * error drops. `true` or a number of passes at most (an integer ≥ 0); default 2 passes with `fit`.
 	 */
 	swaps?: boolean | number;
+
+	/**
+	 * Replacements tried per probe and swap pass (an integer ≥ 1, default 6): two thirds its nearest
+	 * candidates left out, one third those predicted worst. More find better layouts, at about
+	 * proportional cost (Sponza's figures: docs/placement.md).
+	 */
+	swapTrials?: number;
 
 	/** Where the light matters most: weights both the choice of probes and the reported error ({@link regionWeights}). */
 	region?: RegionOfInterest;

@@ -1,7 +1,8 @@
 import { createProbeInterpolator } from '../interpolation/createProbeInterpolator.js';
 import type { PlanarMesh } from '../interpolation/PlanarMesh.js';
 import { TetrahedralMesh } from '../interpolation/TetrahedralMesh.js';
-import { fitProbeSHUnmeasured, prepareFitSamples, type FitProbeSHResult, type PreparedFitSamples } from '../fitting/fitProbeSH.js';
+import { fitProbeSHWithDesign, prepareFitSamples, type FitProbeSHResult, type PreparedFitSamples } from '../fitting/fitProbeSH.js';
+import type { SampleDesign } from '../fitting/sampleDesign.js';
 import {
 	irradianceAtNormals, irradianceBasis, irradianceErrorScale, irradianceRow, summarizeErrors,
 	type IrradianceErrorSummary,
@@ -152,7 +153,7 @@ export function fitLayout(
 
 	const interpolator = createProbeInterpolator( positions );
 	// The fit's own error pass is skipped: every point's error is measured below, as the runtime blends it.
-	const result = fitProbeSHUnmeasured( interpolator, positions, captured, context.samples, {
+	const { result, design } = fitProbeSHWithDesign( interpolator, positions, captured, context.samples, {
 		gradients, lambda, gradientLambda: gradients ? gradientLambda : 0, nonNegative: fit.nonNegative,
 	} );
 
@@ -160,7 +161,10 @@ export function fitLayout(
 	const slots = new Int32Array( 4 * count ), slotWeights = new Float64Array( 4 * count ), outside = new Uint8Array( count );
 	const cells = interpolator instanceof TetrahedralMesh ? interpolator.cellCount : Infinity;
 	let hint = - 1, spread = 0;
-	for ( let v = 0; v < count; v ++ ) {
+	// The fit located every point already when it kept them all (no zero weights): read its design.
+	const fromDesign = design.count === count && design.slots === 4;
+	if ( fromDesign ) slotsFromDesign( design, cells, slots, slotWeights, outside );
+	for ( let v = 0; v < count && ! fromDesign; v ++ ) {
 
 		const j = context.visitOrder[ v ];
 		const x = points[ 3 * j ], y = points[ 3 * j + 1 ], z = points[ 3 * j + 2 ];
@@ -182,7 +186,7 @@ export function fitLayout(
 
 	// h as fitProbeSH takes it, so a trial's gradient pull matches the fit's.
 	const rms = Math.sqrt( spread / context.totalWeight );
-	const lengthScale = gradients && rms > 0 && Number.isFinite( rms ) ? rms : 1;
+	const lengthScale = fromDesign ? design.lengthScale : gradients && rms > 0 && Number.isFinite( rms ) ? rms : 1;
 	const unknowns = new Float64Array( 27 * stride * size );
 	for ( let i = 0; i < size; i ++ ) {
 
@@ -210,6 +214,25 @@ export function fitLayout(
 		slots, slotWeights, outside, hullVertex, errors, summary: summarizeErrors( errors, context.givenWeights ),
 		adjacencyStart, adjacency,
 	};
+
+}
+
+/** Every point's 4 slots (layout probes, −1 for weight 0), weights and outside flag, read from the fit's design. */
+function slotsFromDesign( design: SampleDesign, cells: number, slots: Int32Array, slotWeights: Float64Array, outside: Uint8Array ): void {
+
+	const { probes, factors, stride, localToGlobal } = design;
+	for ( let j = 0; j < design.count; j ++ ) {
+
+		outside[ j ] = design.cells[ j ] >= cells ? 1 : 0;
+		for ( let s = 0; s < 4; s ++ ) {
+
+			const t = probes[ 4 * j + s ];
+			slots[ 4 * j + s ] = t < 0 ? - 1 : localToGlobal[ t ];
+			slotWeights[ 4 * j + s ] = t < 0 ? 0 : factors[ stride * ( 4 * j + s ) ];
+
+		}
+
+	}
 
 }
 

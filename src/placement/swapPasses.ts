@@ -3,43 +3,39 @@ import { fitLayout, type FittedLayout, type RefitContext } from './refitLayout.j
 import type { ReduceSettings } from './reduceOptions.js';
 import type { Subset } from './startingSet.js';
 import { bestTrial } from './bestTrial.js';
-
-/** Replacements tried per probe and pass: its nearest candidates left out… */
-const NEAREST_TRIED = 4;
-
-/** …and the candidates predicted worst. */
-const WORST_TRIED = 2;
+import { candidateClaims } from './refitReduce.js';
 
 // A swap must lower the fitted mean error by more than this fraction of it: rounding cannot cycle.
 const MIN_GAIN = 1e-9;
 
 /**
- * Swap passes over a fitted layout: for each probe (not a `keep` one, nor a starting-set probe on
- * the hull, whose removal would shrink it), try replacing it by a few candidates — its nearest
- * left out and the worst predicted — each estimated by {@link LocalRefit} (fitted exactly when the
- * swap changes the hull); the best estimate is fitted exactly and kept only when the fitted error
- * drops. Stops after a pass that changed nothing, or after `settings.swapPasses` passes. Edits
- * `subset` in place (a swapped probe keeps its place in `order`).
- * @param startingCount How many of `subset.order`'s first entries are the starting set.
+ * Swap passes over a fitted layout: for each probe (not a `keep` one), try replacing it by a few
+ * candidates — `settings.swapTrials` of them: two thirds its nearest left out, one third the worst
+ * predicted — each estimated by {@link LocalRefit} (fitted exactly when the swap changes the hull);
+ * the best estimate is fitted exactly and kept only when the fitted error drops. Probes of the
+ * starting set move too (a box corner's extreme need not be where a probe helps most; the fitted
+ * error, outer cells included, judges a swap that shrinks the hull). Stops after a pass that
+ * changed nothing, or after `settings.swapPasses` passes. Edits `subset` in place (a swapped probe
+ * keeps its place in `order`).
  * @returns The layout after the last kept swap, fitted at `lambda` / `gradientLambda`.
  */
 export function swapPasses(
 	context: RefitContext, layout: FittedLayout, subset: Subset, settings: ReduceSettings, rank: Uint32Array,
-	local: LocalRefit | null, lambda: number, gradientLambda: number, startingCount: number,
+	local: LocalRefit | null, lambda: number, gradientLambda: number,
 ): FittedLayout {
 
 	const { order, selected } = subset;
 	const fixed = new Set( settings.required );
-	const starting = new Set( order.slice( 0, startingCount ) );
-	const near = nearestCandidates( context, NEAREST_TRIED * 4 );
+	const worstCount = Math.floor( settings.swapTrials / 3 ), nearest = settings.swapTrials - worstCount;
+	const near = nearestCandidates( context, 4 * nearest );
 	for ( let pass = 0; pass < settings.swapPasses; pass ++ ) {
 
 		let changed = false;
 		for ( let r = 0; r < order.length; r ++ ) {
 
 			const probe = order[ r ];
-			if ( fixed.has( probe ) || ( starting.has( probe ) && layout.hullVertex[ r ] === 1 ) ) continue;
-			const tried = replacements( context, layout, selected, rank, near, probe );
+			if ( fixed.has( probe ) ) continue;
+			const tried = replacements( context, layout, selected, rank, near, probe, nearest, worstCount );
 			const current = layout;
 			const best = bestTrial( tried, rank, ( c ) => local === null ? NaN : local.tryMove( r, c ),
 				( c ) => fitLayout( context, swapped( order, r, c ), lambda, gradientLambda ).summary.mean - current.summary.mean );
@@ -76,24 +72,26 @@ function swapped( order: readonly number[], r: number, c: number ): number[] {
 /** The replacements tried for `probe`: its nearest candidates not in the subset, then the worst predicted. */
 function replacements(
 	context: RefitContext, layout: FittedLayout, selected: Uint8Array, rank: Uint32Array, near: Int32Array[], probe: number,
+	nearest: number, worstCount: number,
 ): number[] {
 
 	const out: number[] = [];
 	for ( const c of near[ probe ] ) {
 
-		if ( out.length >= NEAREST_TRIED ) break;
+		if ( out.length >= nearest ) break;
 		if ( selected[ c ] === 0 && context.weights[ c ] > 0 ) out.push( c );
 
 	}
 
-	const claim = ( p: number ): number => context.weights[ p ] * layout.errors[ p ];
+	const claimOf = candidateClaims( context, layout );
+	const claim = ( p: number ): number => claimOf[ p ];
 	const worst: number[] = [];
 	for ( let p = 0; p < context.denseCount; p ++ ) {
 
 		if ( selected[ p ] === 1 || out.includes( p ) || ! ( claim( p ) > 0 ) ) continue;
 		worst.push( p );
 		worst.sort( ( a, b ) => claim( b ) - claim( a ) || rank[ a ] - rank[ b ] );
-		if ( worst.length > WORST_TRIED ) worst.pop();
+		if ( worst.length > worstCount ) worst.pop();
 
 	}
 

@@ -208,6 +208,36 @@ describe( 'reduceProbes with fit (re-fit at every insertion) and swap passes', (
 
 	} );
 
+	it( 'swap passes also move starting-set probes, box-corner extremes on the hull included', () => {
+
+		// The points with x > 0.5 count 0 (weights), so the layout's probes belong at x ≤ 0.5; measured
+		// here: the corner extremes near (0, 0, 0) and (0, 1, 1) move inwards (before issue 14's change
+		// the starting set's hull probes never moved).
+		const weights = Float64Array.from( { length: dense.length / 3 }, ( _, i ) => dense[ 3 * i ] > 0.5 ? 0 : 1 );
+		const options = { targetCount: 14, fit: { lambda: 0.3 }, weights };
+		const before = reduceProbes( dense, sh, { ...options, swaps: false } );
+		const after = reduceProbes( dense, sh, { ...options, swaps: 3 } );
+		const starting = before.history.count[ 0 ];
+		const atCorner = ( i: number ) => [ 0, 1, 2 ].every( ( a ) => Math.min( dense[ 3 * i + a ], 1 - dense[ 3 * i + a ] ) < 0.15 );
+		const startingSet = Array.from( before.order.subarray( 0, starting ) );
+		const movedCorners = startingSet.filter( ( i, k ) => atCorner( i ) && after.order[ k ] !== i );
+		expect( movedCorners.length ).toBeGreaterThan( 0 );
+		expect( after.error.mean ).toBeLessThan( before.error.mean );
+
+	} );
+
+	it( 'more swap trials per probe (swapTrials) never end above fewer at the same insertions here, and 1 works', () => {
+
+		const options = { targetCount: 14, fit: { lambda: 0.3 }, fitSamples, swaps: 3 };
+		const few = reduceProbes( dense, sh, { ...options, swapTrials: 1 } );
+		const many = reduceProbes( dense, sh, { ...options, swapTrials: 12 } );
+		const none = reduceProbes( dense, sh, { ...options, swaps: false } );
+		expect( few.error.mean ).toBeLessThanOrEqual( none.error.mean );
+		expect( many.error.mean ).toBeLessThan( few.error.mean );
+		expect( many.keep.length ).toBe( 14 );
+
+	} );
+
 	it( 'fits gradients when asked (the gradient objective), and they lower the error on this field', () => {
 
 		const plain = reduceProbes( dense, sh, { targetCount: 12, fit: { lambda: 0.3 }, swaps: false, fitSamples } );
@@ -265,6 +295,7 @@ describe( 'reduceProbes with fit (re-fit at every insertion) and swap passes', (
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: 'on' as never } ) ).toThrow( /^reduceProbes: options.fit must be true, false or/ );
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, swaps: true } ) ).toThrow( /^reduceProbes: options.swaps needs options.fit/ );
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: true, swaps: - 1 } ) ).toThrow( /^reduceProbes: options.swaps must be an integer ≥ 0/ );
+		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: true, swapTrials: 0 } ) ).toThrow( /^reduceProbes: options.swapTrials must be an integer ≥ 1/ );
 
 	} );
 

@@ -9,6 +9,9 @@ import { bumpField, sampleField } from './fields.js';
  * by these code paths, so speed work on them must not change a single output bit — order, keep, SH,
  * gradients, errors, per-point errors, history, λ. The hashes were computed by the code before that
  * work (commit 3a36a2c) on a fixed synthetic set; any change of any output float changes them.
+ * Re-pinned on purpose for every fit option (issue 14, Sponza's targets): swap passes also move
+ * the starting set's probes, insertion trial estimates are reused between steps away from the
+ * last insertion, and the steps' point weights come from the fit's own design (located once).
  */
 
 /** A seeded jittered 6 × 6 × 6 grid in the unit cube, a bump and a lamp of light, and 200 extra fit samples. */
@@ -65,17 +68,17 @@ const fitSamples = { positions: set.extra, sh: set.extraSH };
 const weights = Float64Array.from( { length: set.positions.length / 3 }, ( _, i ) => 0.5 + ( i % 3 ) );
 
 const CASES: { name: string; options: ReduceProbesOptions; hash: string }[] = [
-	{ name: 'fit (plain), no swaps', options: { targetCount: 30, fit: true, swaps: false, fitSamples }, hash: 'c227bd0b0517c776a18e323a' },
-	{ name: 'fit (plain) + swaps', options: { targetCount: 30, fit: true, fitSamples }, hash: '25d3f686faf00ae461701a33' },
-	{ name: 'fit (gradients), no swaps', options: { targetCount: 30, fit: { gradients: true }, swaps: false, fitSamples }, hash: '5681961a3d71bcf9648f0092' },
-	{ name: 'fit (gradients) + swaps', options: { targetCount: 30, fit: { gradients: true }, fitSamples }, hash: '3f817177aa501fbfa8007ef3' },
+	{ name: 'fit (plain), no swaps', options: { targetCount: 30, fit: true, swaps: false, fitSamples }, hash: '505f472e009ea2354d54d817' },
+	{ name: 'fit (plain) + swaps', options: { targetCount: 30, fit: true, fitSamples }, hash: 'e550adb46a7f612ca9039c0d' },
+	{ name: 'fit (gradients), no swaps', options: { targetCount: 30, fit: { gradients: true }, swaps: false, fitSamples }, hash: '650e11babbe9f603c1ce71f7' },
+	{ name: 'fit (gradients) + swaps', options: { targetCount: 30, fit: { gradients: true }, fitSamples }, hash: '1b2081b123c4f3cbc30818e9' },
 	{
 		name: 'fit (plain) + swaps, weights, λ given, no fit samples',
-		options: { targetCount: 24, fit: { lambda: 0.02 }, weights, swaps: 3 }, hash: '28c2cd0dd89871bc5a2870de',
+		options: { targetCount: 24, fit: { lambda: 0.02 }, weights, swaps: 3 }, hash: '045a4e7267abf703acae7c9e',
 	},
 	{
 		name: 'fit (gradients, non-negative) + swaps, target error',
-		options: { targetError: 0.02, targetCount: 40, fit: { gradients: true, nonNegative: true }, fitSamples }, hash: '18a32290b7f0e9ed27b97422',
+		options: { targetError: 0.02, targetCount: 40, fit: { gradients: true, nonNegative: true }, fitSamples }, hash: 'cfb6e192cc7eba738d5f13ee',
 	},
 ];
 
