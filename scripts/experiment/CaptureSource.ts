@@ -47,6 +47,9 @@ export interface CaptureSourceOptions {
 
 	log: ( message: string ) => void;
 
+	/** Called after each new capture is added to the store (run.ts writes the file: a stopped run keeps what it made). */
+	saved?: () => void;
+
 }
 
 /** Captures from a {@link CaptureStore}, falling back to the browser. */
@@ -107,6 +110,7 @@ export class CaptureSource implements CaptureProvider {
 		if ( start ) this.store.remove( start );
 		this.store.add( label, settings, positions, sh, ms );
 		this.newCaptures ++;
+		this.options.saved?.();
 		return { sh, ms, saved: false };
 
 	}

@@ -81,6 +81,7 @@ async function main(): Promise<number> {
 	const store = capturesFile ? CaptureStore.read( capturesFile, options.scene ) : new CaptureStore( options.scene );
 	const source = new CaptureSource( store, {
 		offline: options.offline, log,
+		saved: capturesFile ? () => store.write( capturesFile ) : undefined,
 		start: async () => {
 
 			const session = await startSession( log );
