@@ -8,5 +8,6 @@
 
 import './webgpu/installShading.js';
 import './webgpu/installCapture.js';
+import './webgpu/installHelper.js';
 
 export * from './index.js';
