@@ -10,7 +10,9 @@
 // to that many cube maps, one row block each, which saves a render pass and a texture barrier per
 // probe where the faces are small. With FACES the six faces come as 2D textures (copies of a cube
 // render target's faces), read by texelFetch, which software rasterisers (SwiftShader) do faster
-// than cube lookups: worth the copy where the faces are large.
+// than cube lookups: worth the copy where the faces are large. With ATLAS the faces of a whole draw
+// come in one 2D texture, cube map k's face f in the size² block at texel ( f·size, k·size ), as
+// ProbeCapturer renders them: one sampler for any number of cube maps per draw.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -25,7 +27,12 @@ uniform samplerCube cubeMap4;
 uniform samplerCube cubeMap5;
 uniform samplerCube cubeMap6;
 uniform samplerCube cubeMap7;
+#endif
+#if SOURCES > 1 || defined( ATLAS )
 uniform int tiles;
+#endif
+#ifdef ATLAS
+uniform sampler2D atlas;
 #endif
 #ifdef FACES
 uniform sampler2D face0;
@@ -107,8 +114,15 @@ void faceSums( samplerCube cubeMap, const in int face, const in float s, const i
 
 }
 
-// Integrates the tile's block of positions of `cubeMap` (of face0..5 with FACES) and writes the sums.
+// Integrates the tile's block of positions of `cubeMap` (of face0..5 with FACES, of the atlas's row
+// block `source` with ATLAS) and writes the sums.
+#ifdef ATLAS
+void project( const in ivec2 tile, const in int source ) {
+
+	ivec2 origin = ivec2( 0, source * size ), next = ivec2( size, 0 );
+#else
 void project( samplerCube cubeMap, const in ivec2 tile ) {
+#endif
 
 	int quadrant = ( size + 1 ) / 2;
 	int x0 = tile.x * block;
@@ -139,6 +153,14 @@ void project( samplerCube cubeMap, const in ivec2 tile ) {
 			faceTexelSums( face3, low, high, E3, P3, Q3, R3 );
 			faceTexelSums( face4, low, high, E4, P4, Q4, R4 );
 			faceTexelSums( face5, low, high, E5, P5, Q5, R5 );
+			#elif defined( ATLAS )
+			ivec2 low = origin + ivec2( i, j ), high = origin + ivec2( size - 1 - i, size - 1 - j );
+			faceTexelSums( atlas, low, high, E0, P0, Q0, R0 );
+			faceTexelSums( atlas, low + next, high + next, E1, P1, Q1, R1 );
+			faceTexelSums( atlas, low + 2 * next, high + 2 * next, E2, P2, Q2, R2 );
+			faceTexelSums( atlas, low + 3 * next, high + 3 * next, E3, P3, Q3, R3 );
+			faceTexelSums( atlas, low + 4 * next, high + 4 * next, E4, P4, Q4, R4 );
+			faceTexelSums( atlas, low + 5 * next, high + 5 * next, E5, P5, Q5, R5 );
 			#else
 			faceSums( cubeMap, 0, s, t, E0, P0, Q0, R0 );
 			faceSums( cubeMap, 1, s, t, E1, P1, Q1, R1 );
@@ -173,6 +195,11 @@ void project( samplerCube cubeMap, const in ivec2 tile ) {
 void main() {
 
 	ivec2 tile = ivec2( gl_FragCoord.xy ) - ivec2( 0, rowOffset );
+	#ifdef ATLAS
+	// Row block `source` of this draw's rows reads row block `source` of the atlas.
+	int source = tile.y / tiles;
+	project( ivec2( tile.x, tile.y - source * tiles ), source );
+	#else
 	#if SOURCES > 1
 	// Samplers can only be indexed by constants in GLSL ES 3.00, hence the chain. tiles is even
 	// (but for 1² and 2² faces), so a 2 × 2 fragment quad never spans two sources.
@@ -187,5 +214,6 @@ void main() {
 	if ( source == 7 ) { project( cubeMap7, tile ); return; }
 	#endif
 	project( cubeMap0, tile );
+	#endif
 
 }

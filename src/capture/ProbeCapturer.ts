@@ -1,6 +1,6 @@
 import {
-	CubeCamera, FloatType, NearestFilter, WebGLCubeRenderTarget,
-	type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
+	CubeCamera, FloatType, NearestFilter, WebGLCubeRenderTarget, WebGLRenderTarget,
+	type Camera, type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
@@ -48,15 +48,19 @@ export interface ProbeCaptureOptions {
 
 }
 
-// GPU memory the cube targets of a group may take together (bytes): small faces get groups of up to
-// SHProjector.maxCubesPerDraw probes projected in one draw, large ones, whose projection dwarfs the
-// cost of a draw, fewer.
+// GPU memory the face atlas of a group may take (bytes): small faces get groups of many probes
+// rendered into one atlas and projected in one draw, large ones, whose projection dwarfs the cost
+// of a draw, one probe per group.
 const GROUP_BYTES = 1 << 20;
 
+// Most atlas rows: WebGL2 guarantees textures of 2048 texels per side (and 6 × 256 fits a row).
+const ATLAS_MAX_SIZE = 2048;
+
 /**
- * Renders cube maps of a scene at probe positions and projects them to SH9 on the GPU. Probes are
- * rendered in groups of a few cube render targets, each group projected in one draw, and
- * projected in batches, each ending in one small read-back (27 floats per probe).
+ * Renders cube maps of a scene at probe positions and projects them to SH9 on the GPU. The six
+ * faces of a group of probes are rendered side by side into one 2D atlas (one framebuffer, where
+ * a cube render target has one per face), each group projected in one draw, and projected in
+ * batches, each ending in one small read-back (27 floats per probe).
  *
  * ```js
  * const capturer = new ProbeCapturer( renderer, { resolution: 64 } );
@@ -73,12 +77,14 @@ export class ProbeCapturer {
 	readonly resolution: number;
 
 	/**
-	 * The cube render target of the first probe of each group (so of a single probe's capture);
-	 * the other probes of a group go to targets of the same kind that the capturer keeps.
+	 * A cube render target of the capture's size and type, the one `cubeCamera` renders into: for
+	 * a probe rendered by hand (`cubeCamera.update`, then `projector.add`). `capture()` does not
+	 * write it: it renders each face with `cubeCamera`'s cameras into a 2D face atlas, texel for
+	 * texel the same image.
 	 */
 	readonly cubeRenderTarget: WebGLCubeRenderTarget;
 
-	/** The cube camera; its position is set to each probe in turn (its render target too, within a group). */
+	/** The cube camera; its position is set to each probe in turn, and its six cameras render the faces. */
 	readonly cubeCamera: CubeCamera;
 
 	/** The GPU projection. */
@@ -86,8 +92,8 @@ export class ProbeCapturer {
 
 	private readonly solidAngle: CubeSolidAngleMode;
 	private readonly shadowMaps: ShadowMapFreeze;
-	// cubeRenderTarget and the group's other targets, created when first needed.
-	private readonly groupTargets: WebGLCubeRenderTarget[];
+	// A group's faces: probe k of the group in row block k, face f in column block f (made when first needed).
+	private atlas: WebGLRenderTarget | null = null;
 	private readonly groupSize: number;
 	private readonly type: TextureDataType;
 	private busy = false;
@@ -105,10 +111,11 @@ export class ProbeCapturer {
 		this.resolution = resolution;
 		this.solidAngle = solidAngle;
 		this.type = type;
-		this.cubeRenderTarget = this.createTarget();
-		this.groupTargets = [ this.cubeRenderTarget ];
+		this.cubeRenderTarget = new WebGLCubeRenderTarget( resolution, {
+			type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+		} );
 		const bytes = 6 * resolution * resolution * ( type === FloatType ? 16 : 8 );
-		this.groupSize = Math.max( 1, Math.min( SHProjector.maxCubesPerDraw, Math.floor( GROUP_BYTES / bytes ) ) );
+		this.groupSize = Math.max( 1, Math.min( Math.floor( ATLAS_MAX_SIZE / resolution ), Math.floor( GROUP_BYTES / bytes ) ) );
 		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
 		this.projector = new SHProjector( renderer );
 		this.shadowMaps = new ShadowMapFreeze( renderer );
@@ -148,7 +155,9 @@ export class ProbeCapturer {
 		const { renderer, cubeCamera, projector, shadowMaps } = this;
 		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
 		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
-		const autoClear = renderer.autoClear;
+		const autoClear = renderer.autoClear, xrEnabled = renderer.xr.enabled;
+		const savedTarget = renderer.getRenderTarget();
+		const savedFace = renderer.getActiveCubeFace(), savedLevel = renderer.getActiveMipmapLevel();
 		// Results go to `target` only once complete, so a context loss mid-way leaves the caller's
 		// SH as they were.
 		const batch = SHProjector.batchCapacity( this.resolution );
@@ -164,7 +173,7 @@ export class ProbeCapturer {
 
 			scene.updateMatrixWorld();
 			const group = Math.min( this.groupSize, count );
-			while ( this.groupTargets.length < group ) this.groupTargets.push( this.createTarget() );
+			const atlas = this.ensureAtlas( group );
 
 			for ( let start = 0; start < count; start += batch ) {
 
@@ -173,23 +182,22 @@ export class ProbeCapturer {
 				for ( let i = start; i < start + size; i ++ ) {
 
 					this.checkContext();
-					// Probe i goes to slot k of its group; the group is projected in one draw once full.
+					// Probe i goes to row k of the atlas; the group is projected in one draw once full.
 					const k = ( i - start ) % group;
-					cubeCamera.renderTarget = this.groupTargets[ k ];
 					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
 					cubeCamera.updateMatrixWorld();
-					renderer.autoClear = true; // every face must start cleared
-					cubeCamera.update( renderer, scene );
-					// The targets, not their textures: large faces are then read from 2D copies (SHProjector.add).
-					if ( k === group - 1 ) projector.add( group === 1 ? this.groupTargets[ 0 ] : this.groupTargets.slice( 0, group ) );
-					else if ( i === start + size - 1 ) projector.add( this.groupTargets.slice( 0, k + 1 ) );
+					this.renderFaces( scene, atlas, k );
+					if ( k === group - 1 || i === start + size - 1 ) projector.addAtlas( atlas.texture, k + 1 );
 					options.onProgress?.( i + 1, count );
 
 					// Give a page a frame now and then to paint its progress bar, with the hidden
-					// objects shown again, so the frame it draws looks normal.
+					// objects shown again and its render target and settings back, so the frame it
+					// draws looks normal.
 					if ( i + 1 < count && now() - lastYield > 30 ) {
 
+						renderer.setRenderTarget( savedTarget, savedFace, savedLevel );
 						renderer.autoClear = autoClear;
+						renderer.xr.enabled = xrEnabled;
 						show( hidden );
 						shadowMaps.pause();
 						await nextTask();
@@ -209,8 +217,9 @@ export class ProbeCapturer {
 		} finally {
 
 			shadowMaps.end();
-			cubeCamera.renderTarget = this.cubeRenderTarget;
+			renderer.setRenderTarget( savedTarget, savedFace, savedLevel );
 			renderer.autoClear = autoClear;
+			renderer.xr.enabled = xrEnabled;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
 			show( hidden );
 			this.busy = false;
@@ -263,19 +272,57 @@ export class ProbeCapturer {
 
 	}
 
-	/** Frees the cube render targets and the projection's targets and materials. */
-	dispose(): void {
+	/**
+	 * Renders the six faces at `cubeCamera`'s position into row block `row` of the atlas, each
+	 * face's camera into its own viewport with a scissor around it, so three's clear (and its
+	 * background) touch only that face: the same image as `cubeCamera.update` renders into a cube
+	 * render target's face, without a framebuffer switch per face.
+	 */
+	private renderFaces( scene: Scene, atlas: WebGLRenderTarget, row: number ): void {
 
-		for ( const target of this.groupTargets ) target.dispose();
-		this.projector.dispose();
+		const { renderer, cubeCamera, resolution } = this;
+		if ( cubeCamera.coordinateSystem !== renderer.coordinateSystem ) {
+
+			cubeCamera.coordinateSystem = renderer.coordinateSystem;
+			cubeCamera.updateCoordinateSystem();
+
+		}
+
+		renderer.autoClear = true; // every face must start cleared
+		renderer.xr.enabled = false;
+		for ( let face = 0; face < 6; face ++ ) {
+
+			atlas.viewport.set( face * resolution, row * resolution, resolution, resolution );
+			atlas.scissor.copy( atlas.viewport );
+			// setRenderTarget takes the target's viewport and scissor.
+			renderer.setRenderTarget( atlas );
+			renderer.render( scene, cubeCamera.children[ face ] as Camera );
+
+		}
 
 	}
 
-	private createTarget(): WebGLCubeRenderTarget {
+	/** The face atlas, with room for `rows` probes (made or remade larger when needed). */
+	private ensureAtlas( rows: number ): WebGLRenderTarget {
 
-		return new WebGLCubeRenderTarget( this.resolution, {
-			type: this.type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+		const size = this.resolution;
+		if ( this.atlas && this.atlas.height >= rows * size ) return this.atlas;
+		this.atlas?.dispose();
+		this.atlas = new WebGLRenderTarget( 6 * size, rows * size, {
+			type: this.type, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false, depthBuffer: true,
 		} );
+		this.atlas.scissorTest = true;
+		return this.atlas;
+
+	}
+
+	/** Frees the cube render target, the face atlas and the projection's targets and materials. */
+	dispose(): void {
+
+		this.cubeRenderTarget.dispose();
+		this.atlas?.dispose();
+		this.atlas = null;
+		this.projector.dispose();
 
 	}
 

@@ -116,6 +116,8 @@ export class SHProjector {
 	private readonly cubeMaterials: RawShaderMaterial[];
 	private readonly cubeBatchMaterials: RawShaderMaterial[];
 	private readonly faceMaterials: RawShaderMaterial[];
+	// Reads a whole draw's cube maps from one 2D face atlas (addAtlas).
+	private readonly atlasMaterials: RawShaderMaterial[];
 	// 2D copies of a large cube render target's faces (FramebufferTexture), made when first needed.
 	private readonly faces: FramebufferTexture[] = [];
 	private readonly equirectMaterials: RawShaderMaterial[];
@@ -163,6 +165,7 @@ export class SHProjector {
 		};
 		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) cube[ `cubeMap${i}` ] = { value: null };
 		for ( let face = 0; face < 6; face ++ ) cube[ `face${face}` ] = { value: null };
+		cube.atlas = { value: null };
 		const equirect = { panorama: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 } };
 		const reduce: Uniforms = { factor: { value: 4 } };
 		const gather: Uniforms = { factor: { value: 1 } };
@@ -177,6 +180,7 @@ export class SHProjector {
 		const batch = { SOURCES: MAX_CUBES_PER_DRAW };
 		this.cubeBatchMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, batch ) );
 		this.faceMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, { FACES: 1 } ) );
+		this.atlasMaterials = this.groups.map( ( group ) => material( shProjectCubeFrag, cube, group, { ATLAS: 1 } ) );
 		this.equirectMaterials = this.groups.map( ( group ) => material( shProjectEquirectFrag, equirect, group ) );
 		this.reduceMaterials = this.groups.map( ( group ) => material( shReduceFrag, reduce, group ) );
 		this.gatherMaterial = material( shGatherFrag, gather, { first: 0, count: 1 } );
@@ -379,6 +383,47 @@ export class SHProjector {
 
 		this.setCubes( items, 0, count );
 		this.drawSources( count > 1 ? this.cubeBatchMaterials : this.cubeMaterials, count );
+
+	}
+
+	/**
+	 * Projects the next `count` cube maps of a `'cube'` batch from one 2D face atlas, in one draw
+	 * (per plane group) whatever the count: cube map k's six faces lie side by side in row block k,
+	 * face f in the size × size block from texel ( f·size, k·size ), each as a cube render target
+	 * holds that face — what rendering the face's camera into that viewport of a 2D render target
+	 * gives ({@link ProbeCapturer} renders its groups so). Read with `texelFetch`, so any filter
+	 * works. The draws are issued at once: the atlas may be rendered into again right after.
+	 * @param atlas A 2D texture at least 6·size wide and count·size high (a render target's texture).
+	 * @param count Cube maps in the atlas, from its first row block.
+	 */
+	addAtlas( atlas: Texture, count: number ): void {
+
+		const where = 'SHProjector.addAtlas';
+		if ( this.source === null ) throw new Error( `${where}: call begin() first.` );
+		if ( this.source !== 'cube' ) throw new RangeError( `${where}: an atlas holds cube map faces, for a 'cube' batch; this batch is '${this.source}'.` );
+		assertInteger( where, 'count', count, 1 );
+		if ( this.count + count > this.capacity ) {
+
+			throw new Error( `${where}: the batch holds ${this.capacity} sources, ${this.count} added; call finish() first.` );
+
+		}
+
+		const kind = atlas as { isTexture?: boolean; isCubeTexture?: boolean; isData3DTexture?: boolean; isDataArrayTexture?: boolean; image?: { width?: number, height?: number } } | null;
+		if ( kind?.isTexture !== true || kind.isCubeTexture === true || kind.isData3DTexture === true || kind.isDataArrayTexture === true ) {
+
+			throw new TypeError( `${where}: atlas must be a three.js 2D Texture, got ${describeValue( atlas )}.` );
+
+		}
+
+		const width = kind.image?.width ?? 0, height = kind.image?.height ?? 0;
+		if ( width < 6 * this.size || height < count * this.size ) {
+
+			throw new RangeError( `${where}: a ${width} × ${height} atlas cannot hold ${count} cube maps of ${this.size}² (it needs ${6 * this.size} × ${count * this.size}).` );
+
+		}
+
+		this.cubeMaterials[ 0 ].uniforms.atlas.value = atlas;
+		this.drawSources( this.atlasMaterials, count );
 
 	}
 
@@ -640,7 +685,7 @@ export class SHProjector {
 		for ( const texture of this.solidAngleTextures.values() ) texture.dispose();
 		this.solidAngleTextures.clear();
 		const materials = [
-			...this.cubeMaterials, ...this.cubeBatchMaterials, ...this.faceMaterials, ...this.equirectMaterials,
+			...this.cubeMaterials, ...this.cubeBatchMaterials, ...this.faceMaterials, ...this.atlasMaterials, ...this.equirectMaterials,
 			...this.reduceMaterials, this.gatherMaterial,
 		];
 		for ( const material of materials ) material.dispose();
