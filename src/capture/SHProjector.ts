@@ -408,8 +408,10 @@ export class SHProjector {
 
 		}
 
-		const kind = atlas as { isTexture?: boolean; isCubeTexture?: boolean; isData3DTexture?: boolean; isDataArrayTexture?: boolean; image?: { width?: number, height?: number } } | null;
-		if ( kind?.isTexture !== true || kind.isCubeTexture === true || kind.isData3DTexture === true || kind.isDataArrayTexture === true ) {
+		type Kind = { isTexture?: boolean, isCubeTexture?: boolean, isData3DTexture?: boolean, isDataArrayTexture?: boolean };
+		const kind = atlas as ( Kind & { image?: { width?: number, height?: number } } ) | null;
+		if ( kind?.isTexture !== true || kind.isCubeTexture === true || kind.isData3DTexture === true
+			|| kind.isDataArrayTexture === true ) {
 
 			throw new TypeError( `${where}: atlas must be a three.js 2D Texture, got ${describeValue( atlas )}.` );
 
