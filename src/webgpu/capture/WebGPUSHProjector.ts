@@ -1,8 +1,8 @@
 import {
 	CubeTexture, DataTexture, FloatType, NearestFilter, NodeMaterial, NoBlending, QuadMesh, RGBAFormat, RedFormat, RenderTarget,
-	type Texture, type WebGPURenderer,
+	Texture, type WebGPURenderer,
 } from 'three/webgpu';
-import { Fn, cubeTexture, instanceIndex, instancedArray, int, ivec2, screenCoordinate, select, texture, uniform, vec4 } from 'three/tsl';
+import { Fn, cubeTexture, instanceIndex, instancedArray, int, ivec2, screenCoordinate, select, texture, uniform, vec2, vec3, vec4 } from 'three/tsl';
 import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../../sh/cubeTexelSolidAngle.js';
 import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, describeValue } from '../../validate.js';
@@ -55,8 +55,8 @@ export class WebGPUSHProjector {
 	/** Whether the projection runs as compute kernels (the WebGPU backend) or fragment passes (WebGL2). */
 	readonly compute: boolean;
 
-	private readonly cube = cubeTexture( new CubeTexture() );
-	private readonly panorama = texture();
+	private readonly cube = cubeTexture( new CubeTexture(), vec3( 0, 0, 1 ) );
+	private readonly panorama = texture( new Texture(), vec2( 0.5, 0.5 ) );
 	private readonly solidAngles = texture();
 	private readonly size = uniform( 1, 'int' );
 	private readonly height = uniform( 1, 'int' );
@@ -176,6 +176,7 @@ export class WebGPUSHProjector {
 		this.current = null;
 		this.count = 0;
 		let planes: Float32Array;
+		let flipped = false;
 		if ( this.compute ) {
 
 			this.renderer.compute( passes.gather );
@@ -187,12 +188,21 @@ export class WebGPUSHProjector {
 			const gatherTarget = this.gatherTarget!;
 			gatherTarget.viewport.set( 0, 0, PLANES, count );
 			this.draw( gatherTarget, passes.gather );
-			planes = await this.renderer.readRenderTargetPixelsAsync( gatherTarget, 0, 0, PLANES, count ) as Float32Array;
+			// The WebGL2 backend draws rows from the top (viewport, screenCoordinate) but reads them
+			// with readPixels from the bottom: probe p is row count − 1 − p of the last `count` rows.
+			flipped = true;
+			const y = gatherTarget.height - count;
+			planes = await this.renderer.readRenderTargetPixelsAsync( gatherTarget, 0, y, PLANES, count ) as Float32Array;
 
 		}
 
 		const floats = 4 * PLANES;
-		for ( let p = 0; p < count; p ++ ) target.set( planes.subarray( floats * p, floats * p + SH_FLOATS ), offset + SH_FLOATS * p );
+		for ( let p = 0; p < count; p ++ ) {
+
+			const row = flipped ? count - 1 - p : p;
+			target.set( planes.subarray( floats * row, floats * row + SH_FLOATS ), offset + SH_FLOATS * p );
+
+		}
 		return target;
 
 	}

@@ -1,0 +1,210 @@
+import * as THREE from 'three';
+import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { positionWorld, vec3 } from 'three/tsl';
+import { projectCubeMapToSH, projectEquirectToSH } from 'three-capture-lighting/math';
+import { projectEquirectToSHGPU } from 'three-capture-lighting/capture';
+// The webgpu entry (its capture hook installed); the main entry's modules are the same ones.
+import { LightProbeVolume } from '../../../src/webgpu.js';
+import { WebGPUProbeCapturer } from '../../../src/webgpu/capture/WebGPUProbeCapturer.js';
+
+// WebGPURenderer capture on one backend (?backend=webgpu | webgl2), for test/browser/webgpuCapture.test.ts:
+// an analytic environment, the same room captured by WebGLRenderer, a panorama against the CPU
+// projection, create → capture → dispose cycles, and a lost device or context. Results go to window.__result.
+
+const backend = new URLSearchParams( location.search ).get( 'backend' ) === 'webgl2' ? 'webgl2' : 'webgpu';
+const result: Record<string, unknown> = { backend };
+const SIZE = 16;
+
+/** Largest |a − b| over the 27 floats of each probe, relative to that probe's L00 of the channel. */
+function worstError( a: Float32Array, b: Float32Array ): number {
+
+	let worst = 0;
+	for ( let i = 0; i < a.length; i ++ ) {
+
+		const l00 = Math.abs( b[ 27 * Math.floor( i / 27 ) + ( i % 3 ) ] );
+		worst = Math.max( worst, Math.abs( a[ i ] - b[ i ] ) / l00 );
+
+	}
+
+	return worst;
+
+}
+
+/** A room of unlit coloured boxes: the same radiance on both renderers, sharp features everywhere. */
+function room(): THREE.Scene {
+
+	const scene = new THREE.Scene();
+	scene.add( new THREE.Mesh( new THREE.BoxGeometry( 10, 8, 12 ), new THREE.MeshBasicMaterial( { color: 0x8090a0, side: THREE.BackSide } ) ) );
+	for ( const [ color, x, y, z ] of [ [ 0xff2000, 3, 0, - 2 ], [ 0x00ff40, - 2, 2, 1 ], [ 0x3040ff, 0, - 2, 3 ], [ 0xffffff, 1, 3, 0 ] ] ) {
+
+		const box = new THREE.Mesh( new THREE.BoxGeometry( 1.5, 1, 2 ), new THREE.MeshBasicMaterial( { color } ) );
+		box.position.set( x, y, z );
+		scene.add( box );
+
+	}
+
+	return scene;
+
+}
+
+const PROBES = [ 0.3, - 0.2, 0.5, - 2, 1, - 1, 2.5, - 1.5, 2 ];
+
+async function run(): Promise<void> {
+
+	const adapter = backend === 'webgpu' ? await navigator.gpu?.requestAdapter() : null;
+	result.adapter = backend === 'webgl2' || adapter != null;
+	const renderer = new WebGPURenderer( { forceWebGL: backend === 'webgl2' } );
+	renderer.setSize( 32, 32 );
+	document.body.appendChild( renderer.domElement );
+	await renderer.init();
+	result.isWebGPUBackend = ( renderer.backend as { isWebGPUBackend?: boolean } ).isWebGPUBackend === true;
+
+	// Analytic: a sphere painted with L(d) = ( 0.5 + 0.3 d.y, 0.4 − 0.2 d.x, 0.6 + 0.5 d.x d.z ) around the probe,
+	// whose SH are known: L00 = c·0.282095·4π, L1 = b·0.488603·4π/3, L2(xz) = h·1.092548·4π/15, the rest 0.
+	const painted = new THREE.Scene();
+	const paint = new MeshBasicNodeMaterial( { side: THREE.BackSide } );
+	const d = positionWorld.normalize();
+	paint.colorNode = vec3( d.y.mul( 0.3 ).add( 0.5 ), d.x.mul( - 0.2 ).add( 0.4 ), d.x.mul( d.z ).mul( 0.5 ).add( 0.6 ) );
+	painted.add( new THREE.Mesh( new THREE.SphereGeometry( 5, 64, 32 ), paint ) );
+	const expected = new Float32Array( 27 );
+	const l0 = 0.282095 * 4 * Math.PI, l1 = 0.488603 * 4 * Math.PI / 3, l2 = 1.092548 * 4 * Math.PI / 15;
+	expected.set( [ 0.5 * l0, 0.4 * l0, 0.6 * l0 ] );
+	expected[ 3 ] = 0.3 * l1; // coefficient 1 (y), red
+	expected[ 9 + 1 ] = - 0.2 * l1; // coefficient 3 (x), green
+	expected[ 21 + 2 ] = 0.5 * l2; // coefficient 7 (xz), blue
+	const analytic = new LightProbeVolume( { positions: [ 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.01 ] } );
+	let progress = 0;
+	await analytic.capture( renderer, painted, { resolution: SIZE, onProgress: () => { progress ++; } } );
+	result.analyticError = worstError( analytic.sh.slice( 0, 27 ), expected );
+	result.progressCalls = progress;
+	analytic.dispose();
+
+	// The same room captured by WebGLRenderer (ProbeCapturer) and this renderer.
+	const gl = new THREE.WebGLRenderer();
+	const volumeGL = new LightProbeVolume( { positions: PROBES.concat( [ 0, 0, 0 ] ) } );
+	await volumeGL.capture( gl, room(), { resolution: SIZE } );
+	const volumeGPU = new LightProbeVolume( { positions: PROBES.concat( [ 0, 0, 0 ] ) } );
+	await volumeGPU.capture( renderer, room(), { resolution: SIZE } );
+	result.webglError = worstError( volumeGPU.sh, volumeGL.sh );
+	result.webglPerProbe = [ 0, 1, 2, 3 ].map( ( p ) => worstError( volumeGPU.sh.slice( 27 * p, 27 * p + 27 ), volumeGL.sh.slice( 27 * p, 27 * p + 27 ) ) );
+
+	// The projection alone: this renderer's SH of a cube map against the CPU projection of its read-back faces.
+	const capturer = new WebGPUProbeCapturer( renderer, { resolution: SIZE } );
+	const own = await capturer.capture( room(), PROBES.slice( 0, 3 ), new Float32Array( 27 ) );
+	const faces: Float32Array[] = [];
+	for ( let face = 0; face < 6; face ++ ) {
+
+		// WebGPU stores the faces mirrored in x (three's TSL flips the lookup): +X and −X swap, columns reverse.
+		const stored = backend === 'webgpu' ? ( face === 0 ? 1 : face === 1 ? 0 : face ) : face;
+		const half = await renderer.readRenderTargetPixelsAsync( capturer.cubeRenderTarget, 0, 0, SIZE, SIZE, 0, stored ) as Uint16Array;
+		const texels = new Float32Array( 4 * SIZE * SIZE );
+		for ( let y = 0; y < SIZE; y ++ ) {
+
+			for ( let x = 0; x < SIZE; x ++ ) {
+
+				const from = 4 * ( SIZE * y + ( backend === 'webgpu' ? SIZE - 1 - x : x ) );
+				for ( let c = 0; c < 4; c ++ ) texels[ 4 * ( SIZE * y + x ) + c ] = THREE.DataUtils.fromHalfFloat( half[ from + c ] );
+
+			}
+
+		}
+
+		faces.push( texels );
+
+	}
+
+	result.projectionError = worstError( own, projectCubeMapToSH( faces, SIZE ) );
+	capturer.dispose();
+	result.webglL00 = volumeGL.sh[ 0 ];
+	gl.dispose();
+
+	// A panorama (random HDR texels), against the CPU projection of the same texels.
+	const width = 64, height = 32;
+	const pixels = new Float32Array( width * height * 4 );
+	let seed = 7;
+	// Random texels over a ramp up the panorama and along it, so a flipped row or column order shows.
+	for ( let i = 0; i < pixels.length; i ++ ) {
+
+		seed = ( seed * 16807 ) % 2147483647;
+		const texel = i >> 2, row = Math.floor( texel / width ), column = texel % width;
+		pixels[ i ] = seed / 2147483647 + 2 * row / height + column / width;
+
+	}
+
+	const panorama = new THREE.DataTexture( pixels, width, height, THREE.RGBAFormat, THREE.FloatType );
+	panorama.minFilter = panorama.magFilter = THREE.NearestFilter;
+	panorama.needsUpdate = true;
+	const cpu = projectEquirectToSH( pixels, width, height, { rowOrder: 'bottom-up' } );
+	const gpu = await projectEquirectToSHGPU( renderer, panorama );
+	result.panoramaError = worstError( gpu, cpu );
+	panorama.dispose();
+
+	// Create → capture → dispose: what the renderer holds after a cycle is what it held before.
+	const memory = () => {
+
+		const m = renderer.info.memory as unknown as Record<string, number>;
+		return { textures: m.textures, renderTargets: m.renderTargets, storageAttributes: m.storageAttributes, attributes: m.attributes };
+
+	};
+
+	const scene = room();
+	const cycle = async () => {
+
+		const volume = new LightProbeVolume( { positions: PROBES } );
+		await volume.capture( renderer, scene, { resolution: 8 } );
+		volume.dispose();
+
+	};
+
+	await cycle(); // the scene's own geometries and textures come to the GPU once
+	const before = memory();
+	for ( let i = 0; i < 3; i ++ ) await cycle();
+	result.memoryBefore = before;
+	result.memoryAfter = memory();
+
+	// A lost device or context in the middle of a capture: the named error, the SH kept.
+	const kept = new LightProbeVolume( { positions: PROBES } );
+	await kept.capture( renderer, scene, { resolution: 8 } );
+	const held = kept.sh.slice();
+	const lose = () => {
+
+		if ( backend === 'webgpu' ) ( renderer.backend as unknown as { device: GPUDevice } ).device.destroy();
+		else ( renderer.backend as unknown as { gl: WebGL2RenderingContext } ).gl.getExtension( 'WEBGL_lose_context' )!.loseContext();
+
+	};
+
+	try {
+
+		await kept.capture( renderer, scene, { resolution: 8, onProgress: ( done ) => { if ( done === 1 ) lose(); } } );
+		result.lossError = 'no error';
+
+	} catch ( error ) {
+
+		result.lossError = ( error as Error ).message;
+
+	}
+
+	result.shKept = kept.sh.every( ( value, i ) => value === held[ i ] );
+	try {
+
+		await kept.capture( renderer, scene, { resolution: 8 } );
+		result.lostError = 'no error';
+
+	} catch ( error ) {
+
+		result.lostError = ( error as Error ).message;
+
+	}
+
+}
+
+run().then( () => {
+
+	( window as unknown as { __result: unknown } ).__result = result;
+
+}, ( error: Error ) => {
+
+	result.error = `${error.message}\n${error.stack}`;
+	( window as unknown as { __result: unknown } ).__result = result;
+
+} );
