@@ -34,8 +34,10 @@ function worstError( a: Float32Array, b: Float32Array ): number {
 function room(): THREE.Scene {
 
 	const scene = new THREE.Scene();
-	scene.add( new THREE.Mesh( new THREE.BoxGeometry( 10, 8, 12 ), new THREE.MeshBasicMaterial( { color: 0x8090a0, side: THREE.BackSide } ) ) );
-	for ( const [ color, x, y, z ] of [ [ 0xff2000, 3, 0, - 2 ], [ 0x00ff40, - 2, 2, 1 ], [ 0x3040ff, 0, - 2, 3 ], [ 0xffffff, 1, 3, 0 ] ] ) {
+	const walls = new THREE.MeshBasicMaterial( { color: 0x8090a0, side: THREE.BackSide } );
+	scene.add( new THREE.Mesh( new THREE.BoxGeometry( 10, 8, 12 ), walls ) );
+	const boxes = [ [ 0xff2000, 3, 0, - 2 ], [ 0x00ff40, - 2, 2, 1 ], [ 0x3040ff, 0, - 2, 3 ], [ 0xffffff, 1, 3, 0 ] ];
+	for ( const [ color, x, y, z ] of boxes ) {
 
 		const box = new THREE.Mesh( new THREE.BoxGeometry( 1.5, 1, 2 ), new THREE.MeshBasicMaterial( { color } ) );
 		box.position.set( x, y, z );
@@ -51,7 +53,7 @@ const PROBES = [ 0.3, - 0.2, 0.5, - 2, 1, - 1, 2.5, - 1.5, 2 ];
 
 async function run(): Promise<void> {
 
-	const adapter = backend === 'webgpu' ? await navigator.gpu?.requestAdapter() : null;
+	const adapter = backend === 'webgpu' ? await ( navigator as unknown as { gpu?: { requestAdapter(): Promise<unknown> } } ).gpu?.requestAdapter() : null;
 	result.adapter = backend === 'webgl2' || adapter != null;
 	const renderer = new WebGPURenderer( { forceWebGL: backend === 'webgl2' } );
 	renderer.setSize( 32, 32 );
@@ -86,7 +88,8 @@ async function run(): Promise<void> {
 	const volumeGPU = new LightProbeVolume( { positions: PROBES.concat( [ 0, 0, 0 ] ) } );
 	await volumeGPU.capture( renderer, room(), { resolution: SIZE } );
 	result.webglError = worstError( volumeGPU.sh, volumeGL.sh );
-	result.webglPerProbe = [ 0, 1, 2, 3 ].map( ( p ) => worstError( volumeGPU.sh.slice( 27 * p, 27 * p + 27 ), volumeGL.sh.slice( 27 * p, 27 * p + 27 ) ) );
+	const probeSH = ( sh: Float32Array, p: number ) => sh.slice( 27 * p, 27 * p + 27 );
+	result.webglPerProbe = [ 0, 1, 2, 3 ].map( ( p ) => worstError( probeSH( volumeGPU.sh, p ), probeSH( volumeGL.sh, p ) ) );
 
 	// The projection alone: this renderer's SH of a cube map against the CPU projection of its read-back faces.
 	const capturer = new WebGPUProbeCapturer( renderer, { resolution: SIZE } );
@@ -168,7 +171,7 @@ async function run(): Promise<void> {
 	const held = kept.sh.slice();
 	const lose = () => {
 
-		if ( backend === 'webgpu' ) ( renderer.backend as unknown as { device: GPUDevice } ).device.destroy();
+		if ( backend === 'webgpu' ) ( renderer.backend as unknown as { device: { destroy(): void } } ).device.destroy();
 		else ( renderer.backend as unknown as { gl: WebGL2RenderingContext } ).gl.getExtension( 'WEBGL_lose_context' )!.loseContext();
 
 	};
