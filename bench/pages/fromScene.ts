@@ -93,13 +93,13 @@ function optionsOf( entry: Level, resolution: number, fit: boolean, onProgress?:
 }
 
 /**
- * A small fromScene and capture on the level (4 probes of about 8 grid candidates), untimed: it
+ * A small fromScene and capture on the level (4 probes of about 64 grid candidates, 0.3 clear of surfaces), untimed: it
  * compiles the level's shaders and draws its shadow maps once, so the timed runs do not pay for that.
  */
 async function warmUp( name: string, resolution: number ): Promise<void> {
 
 	const entry = level( name );
-	const options = { ...optionsOf( entry, resolution, true ), budget: 4, candidates: 8 };
+	const options = { ...optionsOf( entry, resolution, true ), budget: 4, candidates: 64, clearance: 0.3 };
 	const volume = await LightProbeVolume.fromScene( renderer, entry.scene, options );
 	volume.dispose();
 

@@ -37,11 +37,9 @@ interface Fit { samples: number; gradients: boolean; lambda: number; crossValida
 /** What the page leaves on window for tests (examples/common/testHooks.ts), as far as these tests read it. */
 interface App { __demoApp: { volume: { fitSettings: Fit | null; count: number; metadata: string; positions: Float64Array } } }
 
-async function open(
-	session: BrowserSession, query: string, path = `examples/basic.html?${FIXED}`,
-): Promise<{ page: Page; errors: string[]; demo: Demo }> {
+async function open( session: BrowserSession, query: string ): Promise<{ page: Page; errors: string[]; demo: Demo }> {
 
-	const { page, errors } = await session.open( `${path}&${query}`, SIZE );
+	const { page, errors } = await session.open( `examples/basic.html?${FIXED}&${query}`, SIZE );
 	await page.waitForFunction( () => {
 
 		const demo = ( window as unknown as { __demo?: Demo } ).__demo;
@@ -195,6 +193,22 @@ describe.skipIf( browserSkipReason !== '' )( `Basic page: automatic layout and f
 
 } );
 
+/**
+ * Polls `predicate` in the page every second until it holds (short evaluations: a long wait in one
+ * call would hit the protocol's 180 s limit while Sponza loads and captures on a busy machine).
+ */
+async function until( page: Page, predicate: () => boolean, timeout = 900_000 ): Promise<void> {
+
+	const end = Date.now() + timeout;
+	while ( ! await page.evaluate( predicate ) ) {
+
+		if ( Date.now() > end ) throw new Error( `until: still false after ${timeout / 1000} s` );
+		await new Promise( ( resolve ) => setTimeout( resolve, 1000 ) );
+
+	}
+
+}
+
 const hasSponza = existsSync( `${ASSETS}/sponza/sponza.obj` );
 const sponzaSkip = browserSkipReason || ( hasSponza ? '' : 'Sponza assets missing (see README "Assets")' );
 
@@ -204,10 +218,16 @@ describe.skipIf( sponzaSkip !== '' )( `Sponza page: automatic layout and fit tog
 	beforeAll( async () => { session = await startBrowser(); }, 60_000 );
 	afterAll( async () => { await session?.close(); } );
 
-	it( 'the panel offers "automatic layout (budget 86)" and "fit to dense captures"; auto=1&fit=1 with budget=6: 6 fitted probes in the atrium', async () => {
+	it( 'the panel offers "automatic layout (budget 86)" and "fit to dense captures"; auto=1&fit=1 with budget=6: 6 fitted probes in the atrium', { timeout: 1_200_000 }, async () => {
 
-		const { page, errors, demo } = await open( session, 'auto=1&fit=1&budget=6&candidates=48', 'examples/sponza.html?resolution=8&t=4&character=0' );
-		expect( demo.error ).toBe( '' );
+		const { page, errors } = await session.open( 'examples/sponza.html?resolution=8&t=4&character=0&auto=1&fit=1&budget=6&candidates=48', SIZE );
+		await until( page, () => {
+
+			const demo = ( window as unknown as { __demo?: Demo } ).__demo;
+			return demo !== undefined && ( demo.ready || demo.error !== '' );
+
+		} );
+		expect( await page.evaluate( () => ( window as unknown as { __demo: Demo } ).__demo.error ) ).toBe( '' );
 		expect( errors ).toEqual( [] );
 		const names = await controllerNames( page );
 		expect( names ).toContain( 'automatic layout (budget 6)' );
@@ -230,8 +250,8 @@ describe.skipIf( sponzaSkip !== '' )( `Sponza page: automatic layout and fit tog
 		await page.close();
 		// The page's own budget in the label when none is asked for (not waiting for its first capture).
 		const plain = await session.open( 'examples/sponza.html?resolution=4&t=4&character=0', SIZE );
-		await plain.page.waitForFunction( () => Array.from( document.querySelectorAll( '.lil-controller .lil-name' ) )
-			.some( ( element ) => element.textContent === 'automatic layout (budget 86)' ), { timeout: 300_000 } );
+		await until( plain.page, () => Array.from( document.querySelectorAll( '.lil-controller .lil-name' ) )
+			.some( ( element ) => element.textContent === 'automatic layout (budget 86)' ) );
 		await plain.page.close();
 
 	} );
