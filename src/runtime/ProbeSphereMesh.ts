@@ -1,10 +1,11 @@
 import {
 	InstancedBufferAttribute, InstancedInterleavedBuffer, InstancedMesh, InterleavedBufferAttribute, Matrix4, ShaderMaterial,
-	SphereGeometry,
+	SphereGeometry, type Material,
 } from 'three';
 import { probeVolumeHelperFrag, probeVolumeHelperVert } from '../shaders.generated.js';
 import { SH_FLOATS } from '../validate.js';
 import { isCubeFace } from './cubeCameraHiding.js';
+import { helperMaterials } from './helperHooks.js';
 
 /** Floats per instance in the SH buffer: 27 SH plus one unused, as 7 vec4 attributes. */
 const PACKED = 28;
@@ -33,26 +34,32 @@ export interface ProbeSphereSource {
  * i, so a raycast's `instanceId` is the probe id; removed probes are scaled to nothing), each
  * shaded by its own SH from per-instance attributes. Not drawn by cube cameras, so captures do not
  * see it.
+ *
+ * The material is a `ShaderMaterial` (GLSL, for WebGLRenderer), or — once the library is imported
+ * from `three-capture-lighting/webgpu` — its node-material counterpart for WebGPURenderer (either
+ * backend); chosen when the mesh is made.
  */
-export class ProbeSphereMesh extends InstancedMesh<SphereGeometry, ShaderMaterial> {
+export class ProbeSphereMesh extends InstancedMesh<SphereGeometry, Material> {
 
 	/** Instances the buffers hold; they grow by doubling when probes are added. */
 	private capacity = 0;
 	private shBuffer: InstancedInterleavedBuffer;
 	private hiddenCount = - 1;
 
-	/** A unit sphere with the SH shader; no instances until {@link ProbeSphereMesh.setProbes}. */
+	/**
+	 * A unit sphere with the SH shader (the node material when the webgpu entry installed it); no
+	 * instances until {@link ProbeSphereMesh.setProbes}.
+	 */
 	constructor() {
 
-		const material = new ShaderMaterial( { vertexShader: probeVolumeHelperVert, fragmentShader: probeVolumeHelperFrag } );
-		material.name = 'LightProbeVolumeHelper';
-		super( new SphereGeometry( 1, 16, 12 ), material, 0 ); // a unit sphere, scaled per instance
+		super( new SphereGeometry( 1, 16, 12 ), createSphereMaterial(), 0 ); // a unit sphere, scaled per instance
 		this.name = 'probes';
 		this.shBuffer = this.attachSHBuffer( 0 );
 		// Cube cameras (the volume's captures, reflection probes) skip the spheres: rendering them
 		// would put the helper's own colours into the probes it shows.
-		this.onBeforeRender = ( _renderer, _scene, camera ) => {
+		this.onBeforeRender = ( renderer, _scene, camera, _geometry, material ) => {
 
+			checkRenderer( renderer, material );
 			if ( ! isCubeFace( camera ) ) return;
 			this.hiddenCount = this.count;
 			this.count = 0;
@@ -125,5 +132,32 @@ export class ProbeSphereMesh extends InstancedMesh<SphereGeometry, ShaderMateria
 		return buffer;
 
 	}
+
+}
+
+/** The GLSL material, or the node material the webgpu entry installed. */
+function createSphereMaterial(): Material {
+
+	const hooks = helperMaterials();
+	if ( hooks !== null ) return hooks.createProbeSphereMaterial();
+	const material = new ShaderMaterial( { vertexShader: probeVolumeHelperVert, fragmentShader: probeVolumeHelperFrag } );
+	material.name = 'LightProbeVolumeHelper';
+	return material;
+
+}
+
+/**
+ * A named error, before the renderer fails on its own, when the material does not suit the renderer:
+ * the GLSL material on a WebGPURenderer (the webgpu entry was not imported before the helper was
+ * made), or the node material on a WebGLRenderer.
+ */
+function checkRenderer( renderer: unknown, material: Material ): void {
+
+	const webgpu = ( renderer as { isWebGPURenderer?: boolean } ).isWebGPURenderer === true;
+	const node = ( material as { isNodeMaterial?: boolean } ).isNodeMaterial === true;
+	if ( webgpu === node ) return;
+	throw new Error( webgpu
+		? 'LightProbeVolumeHelper: drawn by a WebGPURenderer, but made with the WebGL material; import the library from \'three-capture-lighting/webgpu\' before making the helper.'
+		: 'LightProbeVolumeHelper: drawn by a WebGLRenderer, but made with the WebGPURenderer\'s node material (the library was imported from \'three-capture-lighting/webgpu\'); draw it with a WebGPURenderer.' );
 
 }
