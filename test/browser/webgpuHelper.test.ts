@@ -51,7 +51,8 @@ describe( 'LightProbeVolumeHelper without the webgpu entry', () => {
 		expect( helper.probes.material.type ).toBe( 'ShaderMaterial' );
 		const { probes } = helper;
 		const camera = { parent: null } as never;
-		const draw = ( renderer: object ) => probes.onBeforeRender( renderer as never, null as never, camera, probes.geometry, probes.material, null as never );
+		const draw = ( renderer: object ) => probes.onBeforeRender(
+			renderer as never, null as never, camera, probes.geometry, probes.material, null as never );
 		expect( () => draw( { isWebGPURenderer: true } ) ).toThrow( /^LightProbeVolumeHelper: drawn by a WebGPURenderer.*three-capture-lighting\/webgpu/ );
 		expect( () => draw( { isWebGLRenderer: true } ) ).not.toThrow();
 		helper.dispose();
