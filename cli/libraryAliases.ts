@@ -2,7 +2,7 @@ import { resolve } from 'node:path';
 import type { Alias } from 'vite';
 
 /** The package's subpath entries (`three-capture-lighting/<name>`), each built from src/<name>.ts. */
-export const SUBPATH_ENTRIES: readonly string[] = [ 'math', 'format', 'capture', 'lightProbeGrid' ];
+export const SUBPATH_ENTRIES: readonly string[] = [ 'math', 'format', 'capture', 'lightProbeGrid', 'webgpu' ];
 
 /**
  * Vite aliases for a dev server over the repository at `root`: `three-capture-lighting` and its

@@ -337,3 +337,14 @@ export function addStaticSun(
 	return sun;
 
 }
+
+/**
+ * The renderer's highest texture anisotropy: `capabilities.getMaxAnisotropy()` on a
+ * WebGLRenderer, `getMaxAnisotropy()` on a WebGPURenderer (which has no `capabilities`).
+ */
+export function maxAnisotropy( renderer: unknown ): number {
+
+	const r = renderer as { capabilities?: { getMaxAnisotropy(): number }; getMaxAnisotropy?(): number };
+	return r.capabilities?.getMaxAnisotropy() ?? r.getMaxAnisotropy?.() ?? 1;
+
+}

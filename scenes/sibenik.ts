@@ -1,7 +1,7 @@
 import * as THREE from 'three';
 import { GridInterpolator } from 'three-capture-lighting/math';
 import arbitrary from './sibenik.json';
-import { addStaticSun, createSky, loadOBJScene, type SceneHost } from './loadOBJScene.js';
+import { addStaticSun, createSky, loadOBJScene, maxAnisotropy, type SceneHost } from './loadOBJScene.js';
 import type { ProbeLayout } from './layout.js';
 
 /** Stained glass of the rose window: MTL name → glow (linear RGB). */
@@ -25,7 +25,7 @@ export async function buildSibenik( app: SceneHost ): Promise<void> {
 		obj: 'sibenik.obj',
 		ambient: 0.12,
 		bumpScale: 0.8,
-		anisotropy: app.renderer.capabilities.getMaxAnisotropy(),
+		anisotropy: maxAnisotropy( app.renderer ),
 		source: 'The Sibenik page needs the Dabrovic Sibenik cathedral (sibenik.obj, untitled.mtl and its 5 textures, from McGuire\'s Computer Graphics Archive) in the folder sibenik/ of the asset folder: ../shared/assets/ beside the repository, or the folder named by CAPTURE_LIGHTING_ASSETS, or pass ?assets=URL.',
 		onProgress: ( text, fraction ) => app.overlay.progress( text, fraction ),
 		onMaterial( material ) {

@@ -1,7 +1,7 @@
 import * as THREE from 'three';
 import { GridInterpolator } from 'three-capture-lighting/math';
 import arbitrary from './sponza.json';
-import { addStaticSun, createSky, loadOBJScene, type SceneHost } from './loadOBJScene.js';
+import { addStaticSun, createSky, loadOBJScene, maxAnisotropy, type SceneHost } from './loadOBJScene.js';
 import type { ProbeLayout } from './layout.js';
 
 /**
@@ -17,7 +17,7 @@ export async function buildSponza( app: SceneHost ): Promise<void> {
 		obj: 'sponza.obj',
 		ambient: 0.3,
 		bumpScale: 0.8,
-		anisotropy: app.renderer.capabilities.getMaxAnisotropy(),
+		anisotropy: maxAnisotropy( app.renderer ),
 		source: 'The Sponza page needs the Dabrovic Sponza (sponza.obj, sponza.mtl and its 16 textures, from McGuire\'s Computer Graphics Archive) in the folder sponza/ of the asset folder: ../shared/assets/ beside the repository, or the folder named by CAPTURE_LIGHTING_ASSETS, or pass ?assets=URL.',
 		onProgress: ( text, fraction ) => app.overlay.progress( text, fraction ),
 	} );

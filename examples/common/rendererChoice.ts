@@ -51,9 +51,7 @@ export async function chooseRenderer( search: string = location.search ): Promis
 
 	const requested = readRendererName( search );
 	if ( requested === 'webgl' ) return { requested, name: requested, webgpu: null, notice: '' };
-	// The webgpu entry by its path in the repository: 'three-capture-lighting/webgpu' is not yet among
-	// the dev server's aliases (cli/libraryAliases.ts SUBPATH_ENTRIES); the same module either way.
-	const [ webgpu ] = await Promise.all( [ import( 'three/webgpu' ), import( '../../src/webgpu.js' ) ] );
+	const [ webgpu ] = await Promise.all( [ import( 'three/webgpu' ), import( 'three-capture-lighting/webgpu' ) ] );
 	let name = requested, notice = '';
 	if ( requested === 'webgpu' ) {
 
