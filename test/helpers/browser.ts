@@ -72,7 +72,8 @@ export async function startBrowser( options: StartBrowserOptions = {} ): Promise
 			const errors: string[] = [];
 			page.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
 			page.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
-			await page.goto( baseUrl + path.replace( /^\//, '' ), { waitUntil: 'load' } );
+			// 120 s: the first page that imports three/webgpu waits for Vite to transform it cold.
+			await page.goto( baseUrl + path.replace( /^\//, '' ), { waitUntil: 'load', timeout: 120_000 } );
 			return { page, errors };
 
 		},
