@@ -203,6 +203,7 @@ export class WebGPUSHProjector {
 			target.set( planes.subarray( floats * row, floats * row + SH_FLOATS ), offset + SH_FLOATS * p );
 
 		}
+
 		return target;
 
 	}
