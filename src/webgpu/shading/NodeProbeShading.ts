@@ -4,7 +4,10 @@ import { isLitNodeMaterial, isNodeMaterial } from '../../runtime/nodeMaterialHoo
 import type { ProbeVolumeUniforms } from '../../runtime/patchMaterial.js';
 import { probeLightingNode } from './ProbeVolumeLightingNode.js';
 import { WRAPPED, probeMaterialRecords, type ProbeMaterialRecord, type ProbeNodeVariant, type WrappedMethod } from './probeMaterialRecords.js';
-import { directScale } from './probeVolumeNodes.js';
+import { directScale, probeIrradianceNode } from './probeVolumeNodes.js';
+
+/** The own property holding the variant's node (see `patch`). */
+const REFRESH = 'probeVolumeNode';
 
 
 /*
@@ -27,6 +30,9 @@ interface Builder {
 interface LightingModelLike {
 
 	indirect( builder: any ): void;
+	/** PhysicalLightingModel's clear-coat and sheen direct terms (with clearcoat / sheen on). */
+	clearcoatSpecularDirect?: any;
+	sheenSpecularDirect?: any;
 
 }
 
@@ -54,7 +60,7 @@ function setupMaterialLightings( this: any, builder: Builder ): unknown[] {
 /**
  * Wraps the lighting model so that the direct light (all direct lights have been added when the
  * model's `indirect` runs) is scaled by `probeVolumeDirectScale`, as reflectedLight's direct terms
- * are in the WebGL patch; 0 shows the probe light alone.
+ * are in the WebGL patch, and the clear-coat and sheen direct terms too; 0 shows the probe light alone.
  */
 function setupLightingModel( this: any, builder: Builder ): LightingModelLike | null {
 
@@ -67,6 +73,9 @@ function setupLightingModel( this: any, builder: Builder ): LightingModelLike | 
 		const reflected = nodeBuilder.context.reflectedLight;
 		reflected.directDiffuse.mulAssign( directScale );
 		reflected.directSpecular.mulAssign( directScale );
+		// Clear coat and sheen keep their direct light apart (added in the model's finish).
+		this.clearcoatSpecularDirect?.mulAssign( directScale );
+		this.sheenSpecularDirect?.mulAssign( directScale );
 		indirect.call( this, nodeBuilder );
 
 	};
@@ -123,7 +132,11 @@ export class NodeProbeShading implements NodeMaterialShading {
 
 		}
 
-		probeMaterialRecords.set( material, { variant: variantOf( patch ), uniforms: patch.uniforms, previous } );
+		const variant = variantOf( patch );
+		probeMaterialRecords.set( material, { variant, uniforms: patch.uniforms, previous } );
+		// A node among the material's own properties makes three's observer refresh its draws every
+		// frame (else unchanged materials and matrices skip the per-object uniform updates).
+		target[ REFRESH ] = probeIrradianceNode( variant );
 		material.needsUpdate = true;
 
 	}
@@ -142,6 +155,7 @@ export class NodeProbeShading implements NodeMaterialShading {
 
 		}
 
+		if ( target[ REFRESH ] === probeIrradianceNode( record.variant ) ) delete target[ REFRESH ];
 		probeMaterialRecords.delete( material );
 		material.needsUpdate = true;
 
