@@ -1,6 +1,6 @@
 import {
 	CubeCamera, FloatType, NearestFilter, WebGLCubeRenderTarget, WebGLRenderTarget,
-	type Camera, type Layers, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
+	type Camera, type Layers, type Material, type Object3D, type Scene, type TextureDataType, type WebGLRenderer,
 } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
@@ -78,9 +78,10 @@ export class ProbeCapturer {
 
 	/**
 	 * A cube render target of the capture's size and type, the one `cubeCamera` renders into: for
-	 * a probe rendered by hand (`cubeCamera.update`, then `projector.add`). `capture()` does not
-	 * write it: it renders each face with `cubeCamera`'s cameras into a 2D face atlas, texel for
-	 * texel the same image.
+	 * a probe rendered by hand (`cubeCamera.update`, then `projector.add`). `capture()` renders
+	 * each face with `cubeCamera`'s cameras into a 2D face atlas instead, texel for texel the same
+	 * image, except in scenes whose pixels depend on their screen position (shadow maps, whose PCF
+	 * noise uses gl_FragCoord, or dithered materials): those it renders here, one probe per draw.
 	 */
 	readonly cubeRenderTarget: WebGLCubeRenderTarget;
 
@@ -172,8 +173,11 @@ export class ProbeCapturer {
 			hidden = this.hide( scene, options );
 
 			scene.updateMatrixWorld();
-			const group = Math.min( this.groupSize, count );
-			const atlas = this.ensureAtlas( group );
+			// three's PCF shadow filter and dithering vary with gl_FragCoord, which differs in the
+			// atlas: such scenes keep the cube render target, one probe per draw, for the same SH.
+			const useAtlas = ! dependsOnPixelPosition( renderer, scene );
+			const group = useAtlas ? Math.min( this.groupSize, count ) : 1;
+			const atlas = useAtlas ? this.ensureAtlas( group ) : null;
 
 			for ( let start = 0; start < count; start += batch ) {
 
@@ -186,8 +190,20 @@ export class ProbeCapturer {
 					const k = ( i - start ) % group;
 					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
 					cubeCamera.updateMatrixWorld();
-					this.renderFaces( scene, atlas, k );
-					if ( k === group - 1 || i === start + size - 1 ) projector.addAtlas( atlas.texture, k + 1 );
+					if ( atlas ) {
+
+						this.renderFaces( scene, atlas, k );
+						if ( k === group - 1 || i === start + size - 1 ) projector.addAtlas( atlas.texture, k + 1 );
+
+					} else {
+
+						renderer.autoClear = true; // every face must start cleared
+						cubeCamera.update( renderer, scene );
+						// The target, not its texture: large faces are then read from 2D copies (SHProjector.add).
+						projector.add( this.cubeRenderTarget );
+
+					}
+
 					options.onProgress?.( i + 1, count );
 
 					// Give a page a frame now and then to paint its progress bar, with the hidden
@@ -325,6 +341,21 @@ export class ProbeCapturer {
 		this.projector.dispose();
 
 	}
+
+}
+
+/** Whether the capture's pixels depend on where a face lies on the target: shadow maps (PCF noise) or a dithered material. */
+function dependsOnPixelPosition( renderer: WebGLRenderer, scene: Scene ): boolean {
+
+	if ( renderer.shadowMap.enabled ) return true;
+	let dithered = false;
+	scene.traverseVisible( ( object ) => {
+
+		const material = ( object as { material?: Material | Material[] } ).material;
+		if ( material ) for ( const m of Array.isArray( material ) ? material : [ material ] ) if ( m.dithering ) dithered = true;
+
+	} );
+	return dithered;
 
 }
 
