@@ -4,6 +4,7 @@ import {
 } from 'three';
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
+import { captureClock, hideForCapture, nextTask, showAfterCapture } from './captureHiding.js';
 import { assertRenderer, assertScene, checkCaptureCall, checkCaptureSettings } from './captureSettings.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../validate.js';
@@ -164,13 +165,13 @@ export class ProbeCapturer {
 		const batch = SHProjector.batchCapacity( this.resolution );
 		const result = new Float32Array( SH_FLOATS * count );
 		let hidden: Object3D[] = [];
-		let lastYield = now();
+		let lastYield = captureClock();
 		this.busy = true;
 
 		try {
 
 			shadowMaps.begin();
-			hidden = this.hide( scene, options );
+			hidden = hideForCapture( scene, options );
 
 			scene.updateMatrixWorld();
 			// three's PCF shadow filter and dithering vary with gl_FragCoord, which differs in the
@@ -209,17 +210,17 @@ export class ProbeCapturer {
 					// Give a page a frame now and then to paint its progress bar, with the hidden
 					// objects shown again and its render target and settings back, so the frame it
 					// draws looks normal.
-					if ( i + 1 < count && now() - lastYield > 30 ) {
+					if ( i + 1 < count && captureClock() - lastYield > 30 ) {
 
 						renderer.setRenderTarget( savedTarget, savedFace, savedLevel );
 						renderer.autoClear = autoClear;
 						renderer.xr.enabled = xrEnabled;
-						show( hidden );
+						showAfterCapture( hidden );
 						shadowMaps.pause();
 						await nextTask();
 						shadowMaps.resume();
-						hidden = this.hide( scene, options );
-						lastYield = now();
+						hidden = hideForCapture( scene, options );
+						lastYield = captureClock();
 
 					}
 
@@ -237,7 +238,7 @@ export class ProbeCapturer {
 			renderer.autoClear = autoClear;
 			renderer.xr.enabled = xrEnabled;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
-			show( hidden );
+			showAfterCapture( hidden );
 			this.busy = false;
 
 		}
@@ -263,28 +264,6 @@ export class ProbeCapturer {
 			throw new Error( 'ProbeCapturer.capture: the WebGL context was lost; the SH already held are kept. Capture again after "webglcontextrestored".' );
 
 		}
-
-	}
-
-	/** Hides excluded and filtered-out objects; returns them so they can be shown again. */
-	private hide( scene: Scene, options: ProbeCaptureOptions ): Object3D[] {
-
-		const hidden: Object3D[] = [];
-		const hideOne = ( object: Object3D ) => {
-
-			if ( object.visible ) { object.visible = false; hidden.push( object ); }
-
-		};
-
-		if ( options.exclude ) for ( const object of options.exclude ) hideOne( object );
-		if ( options.filter ) {
-
-			const filter = options.filter;
-			scene.traverseVisible( ( object ) => { if ( object !== scene && ! filter( object ) ) hideOne( object ); } );
-
-		}
-
-		return hidden;
 
 	}
 
@@ -356,24 +335,5 @@ function dependsOnPixelPosition( renderer: WebGLRenderer, scene: Scene ): boolea
 
 	} );
 	return dithered;
-
-}
-
-function show( objects: Object3D[] ): void {
-
-	for ( const object of objects ) object.visible = true;
-
-}
-
-function now(): number {
-
-	return typeof performance !== 'undefined' ? performance.now() : Date.now();
-
-}
-
-/** Yields to the event loop so a page can repaint a progress bar between batches. */
-function nextTask(): Promise<void> {
-
-	return new Promise( ( resolve ) => setTimeout( resolve, 0 ) );
 
 }

@@ -1,13 +1,13 @@
 import {
 	DataTexture, FloatType, FramebufferTexture, GLSL3, Mesh, NearestFilter, OrthographicCamera, PlaneGeometry, RawShaderMaterial,
-	RedFormat, RGBAFormat, Scene, WebGLRenderTarget,
+	RGBAFormat, Scene, WebGLRenderTarget,
 	type CubeTexture, type Texture, type WebGLCubeRenderTarget, type WebGLRenderer,
 } from 'three';
 import { fullscreenVert, shGatherFrag, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
-import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../sh/cubeTexelSolidAngle.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 import { CAPTURE_SOLID_ANGLES, assertRenderer } from './captureSettings.js';
+import { createSolidAngleTexture } from './solidAngleTexture.js';
 
 // Rows of the projection targets: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
 const MAX_ROWS = 4096;
@@ -628,43 +628,12 @@ export class SHProjector {
 
 	}
 
-	/**
-	 * Texel solid angles of one face quadrant (the same on all six faces and on the four mirror
-	 * images of a texel), as a float texture. On an odd size the middle row and column are their
-	 * own mirror images, read twice by the shader, so they hold half their solid angle (the middle
-	 * texel a quarter): halving is exact in floating point.
-	 */
+	/** The solid-angle texture of a face size and formula, made once per projector. */
 	private solidAngleTexture( size: number, mode: CubeSolidAngleMode ): DataTexture {
 
 		const key = `${size}:${mode}`;
 		let texture = this.solidAngleTextures.get( key );
-		if ( texture ) return texture;
-
-		const solidAngle = mode === 'exact' ? cubeTexelSolidAngle : paperTexelSolidAngle;
-		const quadrant = Math.ceil( size / 2 );
-		const data = new Float32Array( quadrant * quadrant );
-		let total = 0;
-		for ( let row = 0; row < size; row ++ ) {
-
-			for ( let column = 0; column < size; column ++ ) {
-
-				const omega = solidAngle( column, row, size );
-				total += 6 * omega;
-				if ( row >= quadrant || column >= quadrant ) continue;
-				const mirrors = ( 2 * column + 1 === size ? 2 : 1 ) * ( 2 * row + 1 === size ? 2 : 1 );
-				data[ row * quadrant + column ] = omega / mirrors;
-
-			}
-
-		}
-
-		// The paper's weights are rescaled to sum to 4π (its step 4), like projectCubeMapToSH does.
-		if ( mode === 'paper' ) for ( let i = 0; i < data.length; i ++ ) data[ i ] *= 4 * Math.PI / total;
-
-		texture = new DataTexture( data, quadrant, quadrant, RedFormat, FloatType );
-		texture.minFilter = texture.magFilter = NearestFilter;
-		texture.needsUpdate = true;
-		this.solidAngleTextures.set( key, texture );
+		if ( ! texture ) this.solidAngleTextures.set( key, texture = createSolidAngleTexture( size, mode ) );
 		return texture;
 
 	}

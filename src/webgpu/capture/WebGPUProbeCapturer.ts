@@ -1,6 +1,7 @@
 import { CubeCamera, CubeRenderTarget, NearestFilter, type Object3D, type Scene, type TextureDataType, type WebGPURenderer } from 'three/webgpu';
 import type { ProbeCaptureOptions, ProbeCaptureSettings } from '../../capture/ProbeCapturer.js';
 import type { ProbeCapturerLike } from '../../capture/captureBackends.js';
+import { captureClock, hideForCapture, nextTask, showAfterCapture } from '../../capture/captureHiding.js';
 import { assertScene, checkCaptureCall, checkCaptureSettings } from '../../capture/captureSettings.js';
 import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../../validate.js';
@@ -103,13 +104,13 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 		const batch = WebGPUSHProjector.batchCapacity( this.resolution );
 		const result = new Float32Array( SH_FLOATS * count );
 		let hidden: Object3D[] = [];
-		let lastYield = now();
+		let lastYield = captureClock();
 		this.busy = true;
 
 		try {
 
 			shadowMaps.begin( scene, renderer.shadowMap.enabled );
-			hidden = hide( scene, options );
+			hidden = hideForCapture( scene, options );
 			scene.updateMatrixWorld();
 			for ( let start = 0; start < count; start += batch ) {
 
@@ -126,15 +127,15 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 					options.onProgress?.( i + 1, count );
 
 					// A frame for the page now and then (its progress bar), with the hidden objects shown.
-					if ( i + 1 < count && now() - lastYield > 30 ) {
+					if ( i + 1 < count && captureClock() - lastYield > 30 ) {
 
 						renderer.autoClear = autoClear;
-						show( hidden );
+						showAfterCapture( hidden );
 						shadowMaps.pause();
 						await nextTask();
 						shadowMaps.resume();
-						hidden = hide( scene, options );
-						lastYield = now();
+						hidden = hideForCapture( scene, options );
+						lastYield = captureClock();
 
 					}
 
@@ -157,7 +158,7 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 			shadowMaps.end();
 			renderer.autoClear = autoClear;
 			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
-			show( hidden );
+			showAfterCapture( hidden );
 			this.busy = false;
 
 		}
@@ -189,46 +190,5 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 		this.projector.dispose();
 
 	}
-
-}
-
-/** Hides excluded and filtered-out objects; returns them so they can be shown again (as ProbeCapturer). */
-function hide( scene: Scene, options: ProbeCaptureOptions ): Object3D[] {
-
-	const hidden: Object3D[] = [];
-	const hideOne = ( object: Object3D ) => {
-
-		if ( object.visible ) { object.visible = false; hidden.push( object ); }
-
-	};
-
-	if ( options.exclude ) for ( const object of options.exclude ) hideOne( object as Object3D );
-	if ( options.filter ) {
-
-		const filter = options.filter;
-		scene.traverseVisible( ( object ) => { if ( object !== scene && ! filter( object as never ) ) hideOne( object ); } );
-
-	}
-
-	return hidden;
-
-}
-
-function show( objects: Object3D[] ): void {
-
-	for ( const object of objects ) object.visible = true;
-
-}
-
-function now(): number {
-
-	return typeof performance !== 'undefined' ? performance.now() : Date.now();
-
-}
-
-/** Yields to the event loop so a page can repaint a progress bar between probes. */
-function nextTask(): Promise<void> {
-
-	return new Promise( ( resolve ) => setTimeout( resolve, 0 ) );
 
 }

@@ -1,12 +1,12 @@
 import {
-	CubeTexture, DataTexture, FloatType, NearestFilter, NodeMaterial, NoBlending, QuadMesh, RGBAFormat, RedFormat, RenderTarget,
+	CubeTexture, DataTexture, FloatType, NearestFilter, NodeMaterial, NoBlending, QuadMesh, RGBAFormat, RenderTarget,
 	Texture, type WebGPURenderer,
 } from 'three/webgpu';
 import { Fn, cubeTexture, instanceIndex, instancedArray, int, ivec2, screenCoordinate, select, texture, uniform, vec2, vec3, vec4 } from 'three/tsl';
-import { cubeTexelSolidAngle, paperTexelSolidAngle } from '../../sh/cubeTexelSolidAngle.js';
 import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, describeValue } from '../../validate.js';
 import { CAPTURE_SOLID_ANGLES } from '../../capture/captureSettings.js';
+import { createSolidAngleTexture } from '../../capture/solidAngleTexture.js';
 import { cubeTileSums, equirectTileSums, loop, packPlanes, type TSLNode } from './shProjectionNodes.js';
 
 // Rows of the fragment path's partial sums (probes × tiles), as the WebGL projector.
@@ -331,39 +331,12 @@ export class WebGPUSHProjector {
 
 	}
 
-	/**
-	 * Texel solid angles of one face quadrant as a float texture, as `SHProjector` makes them (an odd
-	 * size's middle row and column halved, the paper's weights rescaled to sum to 4π).
-	 */
+	/** The solid-angle texture of a face size and formula (as `SHProjector`'s), made once per projector. */
 	private solidAngleTexture( size: number, mode: CubeSolidAngleMode ): DataTexture {
 
 		const key = `${size}:${mode}`;
 		let texture = this.solidAngleTextures.get( key );
-		if ( texture ) return texture;
-
-		const solidAngle = mode === 'exact' ? cubeTexelSolidAngle : paperTexelSolidAngle;
-		const quadrant = Math.ceil( size / 2 );
-		const data = new Float32Array( quadrant * quadrant );
-		let total = 0;
-		for ( let row = 0; row < size; row ++ ) {
-
-			for ( let column = 0; column < size; column ++ ) {
-
-				const omega = solidAngle( column, row, size );
-				total += 6 * omega;
-				if ( row >= quadrant || column >= quadrant ) continue;
-				const mirrors = ( 2 * column + 1 === size ? 2 : 1 ) * ( 2 * row + 1 === size ? 2 : 1 );
-				data[ row * quadrant + column ] = omega / mirrors;
-
-			}
-
-		}
-
-		if ( mode === 'paper' ) for ( let i = 0; i < data.length; i ++ ) data[ i ] *= 4 * Math.PI / total;
-		texture = new DataTexture( data, quadrant, quadrant, RedFormat, FloatType );
-		texture.minFilter = texture.magFilter = NearestFilter;
-		texture.needsUpdate = true;
-		this.solidAngleTextures.set( key, texture );
+		if ( ! texture ) this.solidAngleTextures.set( key, texture = createSolidAngleTexture( size, mode ) );
 		return texture;
 
 	}
