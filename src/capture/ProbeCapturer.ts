@@ -5,7 +5,7 @@ import {
 import { SHProjector } from './SHProjector.js';
 import { ShadowMapFreeze } from './ShadowMapFreeze.js';
 import { captureClock, hideForCapture, nextTask, showAfterCapture } from './captureHiding.js';
-import { assertRenderer, assertScene, checkCaptureCall, checkCaptureSettings } from './captureSettings.js';
+import { assertScene, assertWebGLRenderer, checkCaptureCall, checkCaptureSettings } from './captureSettings.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../validate.js';
 
@@ -106,7 +106,7 @@ export class ProbeCapturer {
 	 */
 	constructor( renderer: WebGLRenderer, settings: ProbeCaptureSettings = {} ) {
 
-		assertRenderer( 'ProbeCapturer', renderer );
+		assertWebGLRenderer( 'ProbeCapturer', renderer );
 		const { resolution, near, far, type, solidAngle } = checkCaptureSettings( 'ProbeCapturer', '', settings );
 
 		this.renderer = renderer;

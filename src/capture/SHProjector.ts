@@ -6,7 +6,7 @@ import {
 import { fullscreenVert, shGatherFrag, shProjectCubeFrag, shProjectEquirectFrag, shReduceFrag } from '../shaders.generated.js';
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
-import { CAPTURE_SOLID_ANGLES, assertRenderer } from './captureSettings.js';
+import { CAPTURE_SOLID_ANGLES, assertWebGLRenderer } from './captureSettings.js';
 import { createSolidAngleTexture } from './solidAngleTexture.js';
 
 // Rows of the projection targets: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
@@ -143,7 +143,7 @@ export class SHProjector {
 	 */
 	constructor( renderer: WebGLRenderer, options: SHProjectorOptions = {} ) {
 
-		assertRenderer( 'SHProjector', renderer );
+		assertWebGLRenderer( 'SHProjector', renderer );
 		assertOptions( 'SHProjector', 'options', options );
 		assertOptionalBoolean( 'SHProjector', 'options.multipleTargets', options.multipleTargets );
 		if ( options.drawBuffers !== undefined ) assertInteger( 'SHProjector', 'options.drawBuffers', options.drawBuffers, 1, PLANES );
@@ -208,7 +208,7 @@ export class SHProjector {
 	 */
 	static supportsMultipleTargets( renderer: WebGLRenderer ): boolean {
 
-		assertRenderer( 'SHProjector.supportsMultipleTargets', renderer );
+		assertWebGLRenderer( 'SHProjector.supportsMultipleTargets', renderer );
 		let supported = multipleTargetSupport.get( renderer );
 		if ( supported !== undefined ) return supported;
 

@@ -238,10 +238,13 @@ const cases: Case[] = [
 	[ 'captureBounces', () => captureBounces( volume, renderer, scene, { bounces: 1, solidAngle: 'bogus' as never } ) ],
 	// capture classes
 	[ 'ProbeCapturer', () => new ProbeCapturer( null as never ) ],
+	// WebGL-only classes refuse a WebGPURenderer by name (it would fail inside three.js otherwise).
+	[ 'ProbeCapturer', () => new ProbeCapturer( { isWebGPURenderer: true } as never ) ],
 	[ 'ProbeCapturer', () => new ProbeCapturer( renderer, { resolution: 0 } ) ],
 	[ 'ProbeCapturer', () => new ProbeCapturer( renderer, { solidAngle: 'bogus' as never } ) ],
 	[ 'ProbeCapturer', () => new ProbeCapturer( renderer, null as never ) ],
 	[ 'SHProjector', () => new SHProjector( null as never ) ],
+	[ 'SHProjector', () => new SHProjector( { isWebGPURenderer: true } as never ) ],
 	[ 'SHProjector', () => new SHProjector( renderer, { multipleTargets: 'yes' as never } ) ],
 	[ 'SHProjector.batchCapacity', () => SHProjector.batchCapacity( 0 ) ],
 	[ 'SHProjector.supportsMultipleTargets', () => SHProjector.supportsMultipleTargets( null as never ) ],
