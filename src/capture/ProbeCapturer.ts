@@ -176,7 +176,10 @@ export class ProbeCapturer {
 			scene.updateMatrixWorld();
 			// three's PCF shadow filter and dithering vary with gl_FragCoord, which differs in the
 			// atlas: such scenes keep the cube render target, one probe per draw, for the same SH.
-			const useAtlas = ! dependsOnPixelPosition( renderer, scene );
+			// Faces too large for two probes to share an atlas keep it too: the atlas saves draws
+			// and read-backs only when it groups probes, and large faces project faster from the
+			// cube target's 2D copies (SHProjector.add).
+			const useAtlas = this.groupSize > 1 && ! dependsOnPixelPosition( renderer, scene );
 			const group = useAtlas ? Math.min( this.groupSize, count ) : 1;
 			const atlas = useAtlas ? this.ensureAtlas( group ) : null;
 

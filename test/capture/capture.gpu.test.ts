@@ -147,8 +147,9 @@ describe.skipIf( ! ctx.renderer )( `GPU probe capture (headless-gl)${SKIPPED}`, 
 				scene.add( environment );
 				const capturer = new ProbeCapturer( renderer, { resolution: size, type, far: 500, solidAngle } );
 				const gpu = await capturer.capture( scene, [ - 0.3, 0.7, 1.1 ], new Float32Array( 27 ) );
-				// The capture renders into a 2D face atlas; three's own cube render at the same
-				// position is the reference, so this also checks that the atlas faces are those texels.
+				// Up to 64² the capture renders into a 2D face atlas, larger faces into the cube render
+				// target; three's own cube render at the same position is the reference, so this also
+				// checks that the atlas faces are those texels.
 				capturer.cubeCamera.update( renderer, scene );
 				const faces = readCubeFaces( renderer, capturer.cubeRenderTarget );
 				capturer.dispose();
