@@ -47,6 +47,11 @@ export interface LayoutInputs {
 	dense: CapturedSet;
 	/** Extra captured fit points, in open space, beyond the dense candidates (may be empty). */
 	fitPoints: CapturedSet;
+	/**
+	 * A fitted layout of n probes fits to the first max(base, ⌈perProbe × n⌉) of `fitPoints` (at most
+	 * all of them); absent: every layout to all of them.
+	 */
+	fitRule?: { base: number; perProbe: number };
 	/** "Where characters go"; null: no walkable layouts. */
 	walkable: WalkableRegion | null;
 	/** Probes the open-space test rejects. */
@@ -90,7 +95,7 @@ export function buildLayouts( inputs: LayoutInputs ): BuiltLayouts {
 	const built = capturedLayouts( inputs );
 	const samples = concatSamples( inputs.dense, inputs.fitPoints );
 	const dense = built.layouts.pop()!; // the whole dense set stays last
-	built.layouts.push( ...fittedLayouts( inputs, samples ), dense );
+	built.layouts.push( ...fittedLayouts( inputs ), dense );
 
 	// The yardstick without ground truth, the same for every layout; and how many captures a bake of each takes.
 	const denseCount = inputs.dense.positions.length / 3;
@@ -98,7 +103,7 @@ export function buildLayouts( inputs: LayoutInputs ): BuiltLayouts {
 
 		// Automatic layouts' probes are among the dense candidates; the fits also need the extra fit points.
 		const own = layout.kind === 'auto' || layout.kind === 'dense' ? denseCount : layout.positions.length / 3;
-		layout.bakeCaptures = layout.fit ? ( layout.kind === 'auto' ? built.fitSamples : own + built.fitSamples ) : own;
+		layout.bakeCaptures = layout.fit ? ( layout.kind === 'auto' ? layout.fit.samples : own + layout.fit.samples ) : own;
 
 		const interpolator = interpolatorOf( layout );
 		layout.fitSetError = irradianceError( layoutField( layout, interpolator, samples.positions ), samples.sh ).mean;
@@ -181,9 +186,10 @@ export function capturedLayouts( inputs: LayoutInputs ): BuiltLayouts {
  * automatic layouts `reduceProbes` places while re-fitting (one run per count: swaps change the
  * set, so no prefixes).
  */
-export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): EvaluatedLayout[] {
+export function fittedLayouts( inputs: LayoutInputs ): EvaluatedLayout[] {
 
 	const layouts: EvaluatedLayout[] = [];
+	const samples = ( probes: number ) => concatSamples( inputs.dense, fitPointsOf( inputs, probes ) );
 	for ( const grid of inputs.grids ) {
 
 		const box = { min: inputs.box.min, max: inputs.box.max, counts: grid.counts };
@@ -192,7 +198,7 @@ export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): Eval
 
 			layouts.push( {
 				kind: 'grid', positions: grid.positions, captureMs: grid.ms, probesNotInOpenSpace: outside,
-				...fitted( new GridInterpolator( box.min, box.max, box.counts ), grid, samples, gradients ),
+				...fitted( new GridInterpolator( box.min, box.max, box.counts ), grid, samples( grid.positions.length / 3 ), gradients ),
 				name: `grid ${grid.counts.join( 'x' )}, fitted${gradients ? ' + gradients' : ''}`, interpolation: 'trilinear', grid: box,
 			} );
 
@@ -205,7 +211,7 @@ export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): Eval
 
 		layouts.push( {
 			kind: 'hand', interpolation: 'tetrahedral', positions: hand.positions, captureMs: hand.ms, probesNotInOpenSpace: inputs.notOpen( hand.positions ),
-			...fitted( createProbeInterpolator( hand.positions ), hand, samples, gradients ),
+			...fitted( createProbeInterpolator( hand.positions ), hand, samples( hand.positions.length / 3 ), gradients ),
 			name: `hand-made (${hand.name}), fitted${gradients ? ' + gradients' : ''}`,
 		} );
 
@@ -227,7 +233,7 @@ export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): Eval
 
 			for ( const count of [ ...counts ].filter( ( n ) => n >= 4 && n <= maxCount ).sort( ( a, b ) => a - b ) ) {
 
-				layouts.push( placed( inputs, samples, perProbeMs, count, method, swaps, gradients, null ) );
+				layouts.push( placed( inputs, perProbeMs, count, method, swaps, gradients, null ) );
 
 			}
 
@@ -239,7 +245,7 @@ export function fittedLayouts( inputs: LayoutInputs, samples: FitSamples ): Eval
 
 		for ( const gradients of [ false, true ] ) {
 
-			layouts.push( placed( inputs, samples, perProbeMs, inputs.targetProbes, BEST_METHOD, true, gradients, inputs.walkable ) );
+			layouts.push( placed( inputs, perProbeMs, inputs.targetProbes, BEST_METHOD, true, gradients, inputs.walkable ) );
 
 		}
 
@@ -268,14 +274,15 @@ function fitted(
 
 /** An automatic layout placed and fitted by `reduceProbes` (re-fit at every insertion). */
 function placed(
-	inputs: LayoutInputs, samples: FitSamples, perProbeMs: number, count: number, method: AutoMethod, swaps: boolean, gradients: boolean,
+	inputs: LayoutInputs, perProbeMs: number, count: number, method: AutoMethod, swaps: boolean, gradients: boolean,
 	walkable: WalkableRegion | null,
 ): EvaluatedLayout {
 
 	const start = performance.now();
+	const fitPoints = fitPointsOf( inputs, count );
 	const result = reduceProbes( inputs.dense.positions, inputs.dense.sh, {
 		targetCount: count, seed: inputs.seed, fit: { gradients }, ...( swaps ? SWAPS : { swaps: false } ),
-		fitSamples: { positions: inputs.fitPoints.positions, sh: inputs.fitPoints.sh },
+		fitSamples: { positions: fitPoints.positions, sh: fitPoints.sh },
 		...( walkable ? { region: { walkable } } : {} ),
 	} );
 	const ms = performance.now() - start;
@@ -286,12 +293,30 @@ function placed(
 		name, kind: 'auto', method, interpolation: 'tetrahedral', positions: result.positions, sh: result.sh, gradients: result.gradients,
 		captureMs: perProbeMs * count, captureMsEstimated: true, probesNotInOpenSpace: inputs.notOpen( result.positions ),
 		fit: {
-			samples: samples.positions.length / 3, lambda: fit.lambda, gradientLambda: fit.gradientLambda,
+			samples: ( inputs.dense.positions.length + fitPoints.positions.length ) / 3,
+			lambda: fit.lambda, gradientLambda: fit.gradientLambda,
 			crossValidationError: fit.crossValidationError, ms,
 		},
 	};
 	if ( walkable ) layout.region = 'walkable';
 	return layout;
+
+}
+
+/** How many extra fit points a fitted layout of `probes` probes uses (see `LayoutInputs.fitRule`). */
+export function fitPointCount( available: number, probes: number, rule?: { base: number; perProbe: number } ): number {
+
+	return rule ? Math.min( available, Math.max( rule.base, Math.ceil( rule.perProbe * probes ) ) ) : available;
+
+}
+
+/** The first `fitPointCount` extra fit points (the set is drawn in order, so a shorter one is its prefix). */
+function fitPointsOf( inputs: LayoutInputs, probes: number ): CapturedSet {
+
+	const { fitPoints } = inputs;
+	const n = fitPointCount( fitPoints.positions.length / 3, probes, inputs.fitRule );
+	const ms = fitPoints.ms * n / Math.max( 1, fitPoints.positions.length / 3 );
+	return { positions: fitPoints.positions.subarray( 0, 3 * n ), sh: fitPoints.sh.subarray( 0, 27 * n ), ms };
 
 }
 

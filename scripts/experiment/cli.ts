@@ -14,6 +14,8 @@ export interface ExperimentOptions {
 	denseSeed: number;
 	/** Extra captured fit points in open space (null: the scene's default in config.ts). */
 	fitPoints: number | null;
+	/** Fit points per probe of a fitted layout (null: the scene's default in config.ts, else 0). */
+	fitPointsPerProbe: number | null;
 	/** Seed of the extra fit points (default 101, never a ground truth's). */
 	fitSeed: number;
 	/** Ground-truth sample count M (default 500). */
@@ -30,7 +32,7 @@ export interface ExperimentOptions {
 }
 
 export const USAGE = `Usage: npm run experiment -- --scene <${SCENES.join( '|' )}> [--out DIR] [--seed N] [--check-seeds N,N|none]
-       [--dense-seed N] [--fit-points N] [--fit-seed N] [--samples M] [--resolution R] [--save-captures | --captures FILE] [--offline | --capture-only]
+       [--dense-seed N] [--fit-points N] [--fit-points-per-probe K] [--fit-seed N] [--samples M] [--resolution R] [--save-captures | --captures FILE] [--offline | --capture-only]
 
 Measures the paper's claim (arbitrary probes + tetrahedra reach a regular grid's lighting with
 ~20 % of its probes) and what fitting, placement and gradient probes add, in headless Chromium:
@@ -42,6 +44,9 @@ experiment/results).
   --dense-seed N    seed of the dense candidate set the automatic reduction runs on (default 2)
   --fit-points N    extra captured points in open space the fits use besides the dense set
                     (default per scene, config.ts)
+  --fit-points-per-probe K
+                    a fitted layout of n probes fits to the first max(N, K × n) of those points
+                    (default per scene, config.ts; else 0)
   --fit-seed N      seed of those points (default 101)
   --samples M       ground-truth points (default 500)
   --resolution R    cube face size of every capture (default 32)
@@ -59,7 +64,7 @@ named by CAPTURE_LIGHTING_ASSETS); Chromium at $CHROME_PATH, else $CHROMIUM_PATH
 export function parseArguments( argv: readonly string[] ): ExperimentOptions | 'help' {
 
 	const options: Partial<ExperimentOptions> = {
-		out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitSeed: 101, samples: 500, resolution: 32,
+		out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitPointsPerProbe: null, fitSeed: 101, samples: 500, resolution: 32,
 		captures: null, offline: false, captureOnly: false,
 	};
 	let saveCaptures = false;
@@ -109,6 +114,15 @@ export function parseArguments( argv: readonly string[] ): ExperimentOptions | '
 
 			case '--dense-seed': options.denseSeed = integer( 0, 0xFFFFFFFF ); break;
 			case '--fit-points': options.fitPoints = integer( 0, 100000 ); break;
+			case '--fit-points-per-probe': {
+
+				const k = Number( value() );
+				if ( ! Number.isFinite( k ) || k < 0 || k > 1000 ) throw new Error( '--fit-points-per-probe needs a number from 0 to 1000.' );
+				options.fitPointsPerProbe = k;
+				break;
+
+			}
+
 			case '--fit-seed': options.fitSeed = integer( 0, 0xFFFFFFFF ); break;
 			case '--samples': options.samples = integer( 10, 100000 ); break;
 			case '--resolution': options.resolution = integer( 4, 256 ); break;

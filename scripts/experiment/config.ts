@@ -46,6 +46,13 @@ export interface SceneConfig {
 	 */
 	fitPoints: number;
 
+	/**
+	 * Fit points that grow with the layout (`--fit-points-per-probe` default; unset: 0): a fitted
+	 * layout of n probes fits to the first max(fitPoints, ⌈fitPointsPerProbe × n⌉) extra fit points
+	 * (a prefix of the one drawn set), and its bake counts those captures.
+	 */
+	fitPointsPerProbe?: number;
+
 	/** The probe counts of the fitted automatic layouts (one placement run each). */
 	fitCounts: number[];
 

@@ -39,7 +39,12 @@ export async function measure(
 	const scene = await source.scene();
 	const capture = { resolution: options.resolution, near: config.near, far: config.far };
 	const triangles = decodeBase64( scene.triangles, Float32Array ), sides = decodeBase64( scene.sides, Int8Array );
-	const fitCount = options.fitPoints ?? config.fitPoints;
+	// With fit points per probe, the largest fitted layout's need is drawn and captured; smaller ones fit to a prefix.
+	const fitBase = options.fitPoints ?? config.fitPoints;
+	const perProbe = options.fitPointsPerProbe ?? config.fitPointsPerProbe ?? 0;
+	const largestFitted = Math.max( config.paper.gridProbes, config.targets.autoProbes, ...config.fitCounts, ...config.equalStorage.flat(),
+		...config.grids.map( ( counts ) => counts.reduce( ( a, b ) => a * b, 1 ) ) );
+	const fitCount = perProbe > 0 ? Math.max( fitBase, Math.ceil( perProbe * largestFitted ) ) : fitBase;
 	const sets = pointSets( scene, triangles, sides, config, {
 		seeds: [ options.seed, ...options.checkSeeds ], samples: options.samples, denseSeed: options.denseSeed,
 		fitPoints: fitCount, fitSeed: options.fitSeed,
@@ -76,6 +81,7 @@ export async function measure(
 		grids, hand: { name: sets.hand.name, positions: sets.hand.positions, sh: hand.sh, ms: hand.ms },
 		dense: { positions: sets.dense, sh: dense.sh, ms: dense.ms },
 		fitPoints: { positions: sets.fit.positions, sh: fitPoints.sh, ms: fitPoints.ms },
+		...( perProbe > 0 ? { fitRule: { base: fitBase, perProbe } } : {} ),
 		walkable, notOpen, log,
 	};
 	if ( options.captureOnly ) {
@@ -147,7 +153,10 @@ export async function measure(
 			captureMs: dense.ms, reduceMs: built.reduceMs, selectMs: built.selectMs,
 			denseMeanError: built.denseMeanError, recaptureMaxDifference,
 		},
-		fit: { seed: options.fitSeed, points: fitCount, drawn: sets.fit.drawn, captureMs: fitPoints.ms, samples: built.fitSamples },
+		fit: {
+			seed: options.fitSeed, points: fitCount, drawn: sets.fit.drawn, captureMs: fitPoints.ms, samples: built.fitSamples,
+			...( perProbe > 0 ? { base: fitBase, perProbe } : {} ),
+		},
 		walkable: { height: config.walkableHeight, floorTriangles: walkable.floorTriangleCount },
 		capture: { ...capture, type: 'HalfFloat', solidAngle: 'exact' },
 		environment: {

@@ -137,6 +137,25 @@ describe( 'experiment: the layouts never see the ground truth', () => {
 
 	}, 120_000 );
 
+	it( 'fits each layout to its own prefix of the fit points when they grow with the probe count', async () => {
+
+		const options = parseArguments( [ '--scene', 'basic', '--check-seeds', 'none', '--fit-points-per-probe', '2' ] );
+		if ( options === 'help' ) throw new Error( 'unreachable' );
+		const config = { ...CONFIG, fitPoints: 20 };
+		const measured = ( await measure( provider( 0 ), options, () => {}, 0, config ) )!;
+		// The largest fitted layout is the 27-probe grid (and the 20-probe equal-storage one): 2 × 27 = 54 drawn and captured.
+		expect( measured.result.fit ).toMatchObject( { points: 54, base: 20, perProbe: 2 } );
+		const dense = measured.result.dense.probes;
+		const bake = ( name: string ) => measured.result.layouts.find( ( r ) => r.name === name )!.bakeCaptures;
+		expect( bake( 'automatic 6 (greedy-fit + swaps)' ) ).toBe( dense + 20 );
+		expect( bake( 'automatic 20 (greedy-fit + swaps)' ) ).toBe( dense + 40 );
+		expect( bake( 'grid 3x3x3, fitted' ) ).toBe( 27 + dense + 54 );
+		expect( bake( 'hand-made (six probes), fitted' ) ).toBe( 6 + dense + 20 );
+		const layout = ( name: string ) => measured.layouts.find( ( l ) => l.name === name )!;
+		expect( layout( 'automatic 20 (greedy-fit + swaps)' ).fit!.samples ).toBe( dense + 40 );
+
+	}, 120_000 );
+
 	it( 'draws the fit points and the dense set with their own seeds: no ground-truth point among them', () => {
 
 		const sets = pointSets( SCENE, ROOM.triangles, ROOM.sides, CONFIG, {

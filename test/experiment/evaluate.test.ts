@@ -233,7 +233,7 @@ describe( 'experiment: output', () => {
 	it( 'parses the command line', () => {
 
 		expect( parseArguments( [ '--scene', 'sponza' ] ) ).toEqual( {
-			scene: 'sponza', out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitSeed: 101, samples: 500, resolution: 32,
+			scene: 'sponza', out: 'experiment/results', seed: 1, checkSeeds: [ 3, 4 ], denseSeed: 2, fitPoints: null, fitPointsPerProbe: null, fitSeed: 101, samples: 500, resolution: 32,
 			captures: null, offline: false, captureOnly: false,
 		} );
 		expect( parseArguments( [ '--scene=basic', '--out', 'x', '--seed', '7' ] ) ).toMatchObject( { scene: 'basic', out: 'x', seed: 7 } );
@@ -241,6 +241,8 @@ describe( 'experiment: output', () => {
 		expect( parseArguments( [ '--offline', '--out', 'o', '--scene', 'basic' ] ) ).toMatchObject( { offline: true, captures: 'o/basic.captures.json' } );
 		expect( parseArguments( [ '--scene', 'basic', '--captures', 'c.json', '--capture-only' ] ) ).toMatchObject( { captureOnly: true, captures: 'c.json' } );
 		expect( parseArguments( [ '--scene', 'basic', '--fit-points', '800', '--fit-seed', '9', '--check-seeds', 'none' ] ) ).toMatchObject( { fitPoints: 800, fitSeed: 9, checkSeeds: [] } );
+		expect( parseArguments( [ '--scene', 'basic', '--fit-points-per-probe', '2.5' ] ) ).toMatchObject( { fitPointsPerProbe: 2.5 } );
+		expect( () => parseArguments( [ '--scene', 'basic', '--fit-points-per-probe', '-1' ] ) ).toThrow( /--fit-points-per-probe/ );
 		// The reported seed is not checked twice.
 		expect( parseArguments( [ '--scene', 'basic', '--seed', '3', '--check-seeds', '3,5,5' ] ) ).toMatchObject( { seed: 3, checkSeeds: [ 5 ] } );
 		expect( () => parseArguments( [ '--scene', 'basic', '--fit-seed', '1' ] ) ).toThrow( /--fit-seed must differ/ );
