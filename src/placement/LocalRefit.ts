@@ -49,7 +49,9 @@ export class LocalRefit {
 	private readonly matrixCopy = new Float64Array( 16 );
 	private readonly rhs = new Float64Array( 4 * 27 );
 	private readonly factors = new Float64Array( 4 );
-	private readonly target = new Float64Array( 27 );
+	// The held probes of one point in `solve`: unknown offsets and factors (w, fx, fy, fz).
+	private readonly heldBase = new Int32Array( 4 );
+	private readonly heldFactors = new Float64Array( 16 );
 
 	private constructor( context: RefitContext, dynamic: DynamicTetrahedralization, layout: FittedLayout ) {
 
@@ -285,8 +287,9 @@ export class LocalRefit {
 	 */
 	private solve( points: Int32Array, count: number, edited: number, c: number, inserted: boolean ): boolean {
 
-		const { context, layout, changed, matrix, rhs, factors, target } = this;
+		const { context, layout, changed, matrix, rhs, factors, heldBase, heldFactors } = this;
 		const stride = layout.stride, h = layout.lengthScale, unknowns = this.trialUnknowns, positions = this.trialPositions;
+		const sh = context.sh;
 		matrix.fill( 0 );
 		rhs.fill( 0 );
 		for ( let q = 0; q < count; q ++ ) {
@@ -295,8 +298,7 @@ export class LocalRefit {
 			const slots = f >= 0 ? changed.slots : layout.slots, weights = f >= 0 ? changed.weights : layout.slotWeights;
 			const offset = f >= 0 ? 4 * f : 4 * j;
 			const x = context.positions[ 3 * j ], y = context.positions[ 3 * j + 1 ], z = context.positions[ 3 * j + 2 ];
-			for ( let k = 0; k < 27; k ++ ) target[ k ] = context.sh[ 27 * j + k ];
-			let blended = false;
+			let blended = false, held = 0;
 			for ( let s = 0; s < 4; s ++ ) {
 
 				const i = slots[ offset + s ];
@@ -312,32 +314,60 @@ export class LocalRefit {
 
 				}
 
-				// A probe held at its fit: its part of the prediction moves to the target side.
-				const base = 27 * stride * i;
-				if ( stride === 1 ) {
-
-					for ( let k = 0; k < 27; k ++ ) target[ k ] -= w * unknowns[ base + k ];
-					continue;
-
-				}
-
-				for ( let k = 0; k < 27; k ++ ) {
-
-					let v = w * unknowns[ base + k ];
-					v += fx * unknowns[ base + 27 + k ] + fy * unknowns[ base + 54 + k ] + fz * unknowns[ base + 81 + k ];
-					target[ k ] -= v;
-
-				}
+				// A probe held at its fit: its part of the prediction moves to the target side (below, in slot order).
+				heldBase[ held ] = 27 * stride * i;
+				heldFactors[ 4 * held ] = w; heldFactors[ 4 * held + 1 ] = fx;
+				heldFactors[ 4 * held + 2 ] = fy; heldFactors[ 4 * held + 3 ] = fz;
+				held ++;
 
 			}
 
+			// A point the edited probe does not blend adds nothing: its target is not needed.
 			if ( ! blended ) continue;
 			const share = context.weights[ j ] / context.totalWeight;
 			for ( let u = 0; u < stride; u ++ ) {
 
 				const fu = share * factors[ u ];
 				for ( let v = 0; v < stride; v ++ ) matrix[ stride * u + v ] += fu * factors[ v ];
-				for ( let k = 0; k < 27; k ++ ) rhs[ 27 * u + k ] += fu * target[ k ];
+
+			}
+
+			// Each coefficient's target (the truth less the held probes' parts, in slot order) goes straight into
+			// the right-hand sides: the same operations, in the same order, as a target array would take.
+			const t0 = 27 * j;
+			if ( stride === 1 ) {
+
+				const fu = share * factors[ 0 ];
+				for ( let k = 0; k < 27; k ++ ) {
+
+					let value = sh[ t0 + k ];
+					for ( let e = 0; e < held; e ++ ) value -= heldFactors[ 4 * e ] * unknowns[ heldBase[ e ] + k ];
+					rhs[ k ] += fu * value;
+
+				}
+
+				continue;
+
+			}
+
+			const f0 = share * factors[ 0 ], f1 = share * factors[ 1 ], f2 = share * factors[ 2 ], f3 = share * factors[ 3 ];
+			for ( let k = 0; k < 27; k ++ ) {
+
+				let value = sh[ t0 + k ];
+				for ( let e = 0; e < held; e ++ ) {
+
+					const base = heldBase[ e ], o = 4 * e;
+					let v = heldFactors[ o ] * unknowns[ base + k ];
+					v += heldFactors[ o + 1 ] * unknowns[ base + 27 + k ] + heldFactors[ o + 2 ] * unknowns[ base + 54 + k ]
+						+ heldFactors[ o + 3 ] * unknowns[ base + 81 + k ];
+					value -= v;
+
+				}
+
+				rhs[ k ] += f0 * value;
+				rhs[ 27 + k ] += f1 * value;
+				rhs[ 54 + k ] += f2 * value;
+				rhs[ 81 + k ] += f3 * value;
 
 			}
 
