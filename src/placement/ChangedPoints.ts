@@ -7,6 +7,9 @@ import type { FittedLayout } from './refitLayout.js';
 // Barycentric slack: a point this far outside a changed cell (in weight units) still belongs to it.
 const INSIDE_SLACK = 1e-10;
 
+// A changed cell's box is padded by this fraction of its size before its points get weights (INSIDE_SLACK reaches ~1e-10 of it).
+const BOX_PAD = 1e-6;
+
 // Two weights closer than this are the same (the same cell, computed from another inverse).
 const SAME_WEIGHT = 1e-12;
 
@@ -78,6 +81,10 @@ export class ChangedPoints {
 			}
 
 			writeCellInverse( p, tetrahedra, t, matrix );
+			// The grid cells overhang the cell's box: a point outside the box (padded far beyond the barycentric
+			// slack's reach) cannot be inside the cell, and skips the weights.
+			const pad = BOX_PAD * Math.max( maxX - minX, maxY - minY, maxZ - minZ );
+			const loX = minX - pad, loY = minY - pad, loZ = minZ - pad, hiX = maxX + pad, hiY = maxY + pad, hiZ = maxZ + pad;
 			// The points in the grid cells the cell's box overlaps, read in place.
 			grid.cellRange( minX, minY, minZ, maxX, maxY, maxZ, range );
 			for ( let gz = range[ 2 ]; gz <= range[ 5 ]; gz ++ ) for ( let gy = range[ 1 ]; gy <= range[ 4 ]; gy ++ ) {
@@ -87,7 +94,9 @@ export class ChangedPoints {
 					const c = grid.cellIndex( gx, gy, gz );
 					for ( let q = start[ c ], end = start[ c + 1 ]; q < end; q ++ ) {
 
-						this.tryPoint( gridPoints[ q ], points, probes, layout, stamp );
+						const j = gridPoints[ q ], x = points[ 3 * j ], y = points[ 3 * j + 1 ], z = points[ 3 * j + 2 ];
+						if ( x < loX || x > hiX || y < loY || y > hiY || z < loZ || z > hiZ ) continue;
+						this.tryPoint( j, points, probes, layout, stamp );
 
 					}
 
