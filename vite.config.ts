@@ -20,7 +20,7 @@ export default defineConfig( {
 		outDir: resolve( root, 'dist-examples' ),
 		emptyOutDir: true,
 		rollupOptions: {
-			input: Object.fromEntries( [ 'index', 'minimal', 'basic', 'sponza', 'sibenik', 'kyoto', 'tworooms' ]
+			input: Object.fromEntries( [ 'index', 'minimal', 'basic', 'sponza', 'sibenik', 'kyoto', 'tworooms', 'lightmapper' ]
 				.map( ( name ) => [ name, resolve( root, `examples/${name}.html` ) ] )
 				.filter( ( [ , path ] ) => existsSync( path ) ) ),
 		},
