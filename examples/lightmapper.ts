@@ -108,4 +108,4 @@ window.addEventListener( 'resize', () => {
 } );
 
 // For the browser test (test/browser/webgpuLightMap.test.ts).
-Object.assign( window, { lightmapper: { renderer, scene, camera, volume, walls, character, source, lightMapper, setScenery } } );
+Object.assign( window, { lightmapper: { THREE, renderer, scene, camera, volume, walls, character, source, lightMapper, setScenery } } );

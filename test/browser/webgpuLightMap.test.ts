@@ -25,4 +25,45 @@ describe.skipIf( browserSkipReason !== '' )( `lightmapper example${browserSkipRe
 
 	}, 180_000 );
 
+	it( 'renderer=webgl2: the lightmapped walls render as the same walls probe-lit per object (same source of light)', async () => {
+
+		const { page, errors } = await session.open( 'examples/lightmapper.html?renderer=webgl2', { width: 160, height: 90 } );
+		await page.waitForFunction( 'window.lightmapper', { timeout: 150_000 } );
+		const [ baked, lit ] = await page.evaluate( async () => {
+
+			const { THREE, renderer, scene, camera, character, volume, setScenery } = ( window as any ).lightmapper;
+			renderer.setAnimationLoop( null );
+			character.visible = false;
+			const target = new THREE.RenderTarget( 64, 36, { type: THREE.HalfFloatType } );
+			const mean = async () => {
+
+				volume.update();
+				renderer.setRenderTarget( target );
+				renderer.render( scene, camera );
+				renderer.setRenderTarget( null );
+				const data = await renderer.readRenderTargetPixelsAsync( target, 0, 0, 64, 36 );
+				const sum = [ 0, 0, 0 ];
+				const half = ( h: number ) => THREE.DataUtils.fromHalfFloat( h );
+				for ( let i = 0; i < data.length; i += 4 ) {
+
+					for ( let c = 0; c < 3; c ++ ) sum[ c ] += data instanceof Uint16Array ? half( data[ i + c ] ) : data[ i + c ];
+
+				}
+
+				return sum.map( ( v ) => v / ( data.length / 4 ) );
+
+			};
+
+			const a = await mean();
+			setScenery( 'probe-lit per object' );
+			const b = await mean();
+			return [ a, b ];
+
+		} ) as number[][];
+		await page.close();
+		expect( errors ).toEqual( [] );
+		for ( let c = 0; c < 3; c ++ ) expect( Math.abs( baked[ c ] - lit[ c ] ) ).toBeLessThan( 0.03 * lit[ c ] + 0.002 );
+
+	}, 180_000 );
+
 } );
