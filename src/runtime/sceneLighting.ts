@@ -2,7 +2,7 @@ import type { BufferGeometry, Material, Mesh, Object3D, SkinnedMesh } from 'thre
 import { automaticLighting, describeObject, readLightingMark } from './chooseLighting.js';
 import type { AddOptions, ProbeLighting } from './LightProbeVolumeOptions.js';
 import type { LitObject } from './litObjects.js';
-import { getProbeVolumeUniforms } from './patchMaterial.js';
+import { probeUniformsOf } from './nodeMaterialHooks.js';
 import { describeUnlitMeshes, hasProbeLitMaterial, missesProbeLight } from './probeLitMaterials.js';
 
 /*
@@ -124,12 +124,15 @@ export function planSceneLighting(
 
 }
 
-/** A mesh `add( scene )` may light: a position attribute, a material that takes probe light, none patched by someone else. */
+/**
+ * A mesh `add( scene )` may light: a position attribute, a material that takes probe light, none patched by
+ * someone else (by either path: `probeUniformsOf` sees node materials the webgpu entry patched too).
+ */
 function isLightable( mesh: Mesh, owned: ReadonlySet<Material> ): boolean {
 
 	if ( mesh.geometry?.getAttribute( 'position' ) === undefined || ! hasProbeLitMaterial( mesh ) ) return false;
 	const materials = Array.isArray( mesh.material ) ? mesh.material : [ mesh.material ];
-	return ! materials.some( ( material ) => material && getProbeVolumeUniforms( material ) !== null && ! owned.has( material ) );
+	return ! materials.some( ( material ) => material && probeUniformsOf( material ) !== null && ! owned.has( material ) );
 
 }
 
