@@ -3,7 +3,7 @@ import { texture3D, uniform } from 'three/tsl';
 import type { LightProbeVolume } from '../../runtime/LightProbeVolume.js';
 import { ProbeVolumeTexture, type BoundsLike, type ProbeVolumeTextureOptions } from '../../runtime/ProbeVolumeTexture.js';
 import { describeValue } from '../../validate.js';
-import { atlasIrradiance } from './packedSHIrradiance.js';
+import { atlasIrradiance } from '../shading/packedSHIrradiance.js';
 
 // TSL's typings model each node class; the graph is built from untyped chains.
 type TSLNode = any;

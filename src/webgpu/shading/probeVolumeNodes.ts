@@ -1,7 +1,8 @@
 import { Data3DTexture, FloatType, HalfFloatType, LinearFilter, Matrix4, RGBAFormat, Vector3, type Material } from 'three';
 import {
-	attribute, clamp, dot, modelNormalMatrix, normalLocal, normalWorld, positionWorld, texture3D, uniform, varying, vec3, vec4,
+	attribute, dot, modelNormalMatrix, normalLocal, normalWorld, positionWorld, texture3D, uniform, varying, vec3, vec4,
 } from 'three/tsl';
+import { atlasIrradiance, irradianceFromPacked } from './packedSHIrradiance.js';
 import { probeMaterialRecords, type ProbeMaterialRecord, type ProbeNodeVariant } from './probeMaterialRecords.js';
 
 /*
@@ -68,27 +69,6 @@ function irradianceFromMatrices( normal: TSLNode ): TSLNode {
 
 }
 
-/**
- * E(n) from SH9 packed in 7 vec4 (three's LightProbeGrid atlas packing), with the constants of
- * `SphericalHarmonics3.getIrradianceAt` (shaders/probeVolumeSHEval.glsl; not clamped at zero).
- */
-function irradianceFromPacked( s: TSLNode[], normal: TSLNode ): TSLNode {
-
-	const [ s0, s1, s2, s3, s4, s5, s6 ] = s;
-	const x = normal.x, y = normal.y, z = normal.z;
-	let e = s0.xyz.mul( 0.886227 );
-	e = e.add( vec3( s0.w, s1.xy ).mul( y.mul( 2 * 0.511664 ) ) );
-	e = e.add( vec3( s1.zw, s2.x ).mul( z.mul( 2 * 0.511664 ) ) );
-	e = e.add( s2.yzw.mul( x.mul( 2 * 0.511664 ) ) );
-	e = e.add( s3.xyz.mul( x.mul( y ).mul( 2 * 0.429043 ) ) );
-	e = e.add( vec3( s3.w, s4.xy ).mul( y.mul( z ).mul( 2 * 0.429043 ) ) );
-	e = e.add( vec3( s4.zw, s5.x ).mul( z.mul( z ).mul( 0.743125 ).sub( 0.247708 ) ) );
-	e = e.add( s5.yzw.mul( x.mul( z ).mul( 2 * 0.429043 ) ) );
-	e = e.add( s6.xyz.mul( x.mul( x ).sub( y.mul( y ) ).mul( 0.429043 ) ) );
-	return e;
-
-}
-
 /** An empty atlas of the given texel type: the value the texture node is built with. */
 function placeholderAtlas( type: typeof HalfFloatType | typeof FloatType ): Data3DTexture {
 
@@ -136,15 +116,7 @@ function textureIrradiance( type: typeof HalfFloatType | typeof FloatType ): TSL
 
 	} );
 
-	let uvw: TSLNode = positionWorld.sub( gridMin ).div( gridMax.sub( gridMin ) ).mul( res.sub( 1 ) ).add( 0.5 ).div( res );
-	// Outside the bounds the light stays that of the nearest face, as outside the probes' hull.
-	uvw = clamp( uvw, vec3( 0.5 ).div( res ), vec3( 1 ).sub( vec3( 0.5 ).div( res ) ) );
-	const padded = res.z.add( 2 );
-	const depth = padded.mul( 7 );
-	const z = uvw.z.mul( res.z ).add( 1 );
-	const slices: TSLNode[] = [];
-	for ( let i = 0; i < 7; i ++ ) slices.push( atlas.sample( vec3( uvw.xy, z.add( padded.mul( i ) ).div( depth ) ) ) );
-	return irradianceFromPacked( slices, normalWorld ).mul( intensity );
+	return atlasIrradiance( atlas, gridMin, gridMax, res, positionWorld, normalWorld ).mul( intensity );
 
 }
 

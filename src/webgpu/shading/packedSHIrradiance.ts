@@ -1,8 +1,9 @@
 import { clamp, vec3 } from 'three/tsl';
 
 /*
- * The TSL evaluation of a ProbeVolumeTexture atlas, shared by the lightmap source and (once the
- * lead switches it over) the texture variant of probeVolumeNodes.ts, so both read the same light.
+ * The TSL evaluation of SH9 packed as three's LightProbeGrid packs it, and of a ProbeVolumeTexture
+ * atlas, shared by the shading variants (probeVolumeNodes.ts) and the light-map source
+ * (../lightmap/ProbeVolumeIrradiance.ts), so both read the same light.
  */
 
 // TSL's typings model each node class; the graph below is built from untyped chains.
