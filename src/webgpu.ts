@@ -11,5 +11,5 @@ import './webgpu/installCapture.js';
 import './webgpu/installHelper.js';
 
 export * from './index.js';
-export { ProbeVolumeIrradiance, probeVolumeIrradiance } from './webgpu/lightmap/ProbeVolumeIrradiance.js';
+export { ProbeVolumeIrradiance } from './webgpu/lightmap/ProbeVolumeIrradiance.js';
 export type { ProbeVolumeIrradianceOptions } from './webgpu/lightmap/ProbeVolumeIrradiance.js';

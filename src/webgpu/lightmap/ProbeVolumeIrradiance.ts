@@ -1,5 +1,6 @@
 import { Box3, Vector3 } from 'three';
 import { texture3D, uniform } from 'three/tsl';
+import { boundsOf } from '../../geometry/boundsOf.js';
 import type { LightProbeVolume } from '../../runtime/LightProbeVolume.js';
 import { ProbeVolumeTexture, type BoundsLike, type ProbeVolumeTextureOptions } from '../../runtime/ProbeVolumeTexture.js';
 import { describeValue } from '../../validate.js';
@@ -134,27 +135,7 @@ export class ProbeVolumeIrradiance {
 /** The probes' box grown by one probe spacing, so walls just outside the hull are covered. */
 function probeBounds( volume: LightProbeVolume ): Box3 {
 
-	const box = new Box3(), p = new Vector3(), positions = volume.positions;
-	for ( let i = 0; i + 2 < positions.length; i += 3 ) {
-
-		box.expandByPoint( p.set( positions[ i ], positions[ i + 1 ], positions[ i + 2 ] ) );
-
-	}
-
-	return box.expandByScalar( volume.probeSpacing );
-
-}
-
-/**
- * The volume's irradiance source for three's `LightMapper`: `new ProbeVolumeIrradiance( renderer, volume, options )`.
- * @param renderer A `WebGPURenderer`.
- * @param volume A captured `LightProbeVolume`.
- * @param options See {@link ProbeVolumeIrradianceOptions}.
- */
-export function probeVolumeIrradiance(
-	renderer: unknown, volume: LightProbeVolume, options: ProbeVolumeIrradianceOptions = {},
-): ProbeVolumeIrradiance {
-
-	return new ProbeVolumeIrradiance( renderer, volume, options );
+	const b = boundsOf( volume.positions );
+	return new Box3( new Vector3( b[ 0 ], b[ 1 ], b[ 2 ] ), new Vector3( b[ 3 ], b[ 4 ], b[ 5 ] ) ).expandByScalar( volume.probeSpacing );
 
 }
