@@ -2,8 +2,9 @@ import { Box3, Vector3 } from 'three';
 import { texture3D, uniform } from 'three/tsl';
 import { boundsOf } from '../../geometry/boundsOf.js';
 import type { LightProbeVolume } from '../../runtime/LightProbeVolume.js';
-import { ProbeVolumeTexture, type BoundsLike, type ProbeVolumeTextureOptions } from '../../runtime/ProbeVolumeTexture.js';
-import { describeValue } from '../../validate.js';
+import { assertUsableProbeField } from '../../runtime/ProbeField.js';
+import { checkVolumeTextureOptions, ProbeVolumeTexture, type BoundsLike, type ProbeVolumeTextureOptions } from '../../runtime/ProbeVolumeTexture.js';
+import { assertOptions, describeValue } from '../../validate.js';
 import { atlasIrradiance } from '../shading/packedSHIrradiance.js';
 
 // TSL's typings model each node class; the graph is built from untyped chains.
@@ -43,8 +44,11 @@ export class ProbeVolumeIrradiance {
 	readonly volumeTexture: ProbeVolumeTexture;
 
 	/**
-	 * `( position, normal ) => vec3 node`: E(n) at a world position and unit world normal, to pass
-	 * to `LightMapper` as its irradiance function (the sample index is not needed).
+	 * `( position, normal ) => vec3 node`: E(n) at a world position and world normal, to pass to
+	 * `LightMapper` as its irradiance function (the sample index is not needed). Outside `bounds`
+	 * the light is that of the box's nearest point (the texture is clamped there, unlike the
+	 * volume's outer cells). The normal is used as given, as `SphericalHarmonics3.getIrradianceAt`
+	 * uses it (LightMapper passes unit normals): a zero normal gives the constant term, no NaN.
 	 */
 	readonly irradiance: ( position: TSLNode, normal: TSLNode ) => TSLNode;
 
@@ -72,7 +76,12 @@ export class ProbeVolumeIrradiance {
 
 		}
 
+		assertUsableProbeField( where, volume );
 		if ( ! sh.some( ( v ) => v !== 0 ) ) throw new Error( `${where}: the volume has no light yet; call volume.capture( renderer, scene ) first.` );
+		// Checked here so that bad options and bounds name this class, not the texture it makes.
+		assertOptions( where, 'options', options );
+		checkVolumeTextureOptions( where, options );
+		if ( options.bounds !== undefined ) checkBounds( where, options.bounds );
 		const intensity = options.intensity ?? 1;
 		if ( typeof intensity !== 'number' || ! Number.isFinite( intensity ) || intensity < 0 ) {
 
@@ -104,6 +113,7 @@ export class ProbeVolumeIrradiance {
 
 	set intensity( value: number ) {
 
+		if ( this.disposed ) throw new Error( 'ProbeVolumeIrradiance.intensity: set after dispose().' );
 		if ( typeof value !== 'number' || ! Number.isFinite( value ) || value < 0 ) {
 
 			throw new RangeError( `ProbeVolumeIrradiance.intensity: expected a finite number ≥ 0, got ${describeValue( value )}.` );
@@ -117,12 +127,15 @@ export class ProbeVolumeIrradiance {
 	/** Resamples the volume after a capture or probe edit (then re-bake the light map). */
 	update(): void {
 
-		if ( this.disposed ) throw new Error( 'ProbeVolumeIrradiance.update: called after dispose().' );
+		const where = 'ProbeVolumeIrradiance.update';
+		if ( this.disposed ) throw new Error( `${where}: called after dispose().` );
+		// The texture would check too, under its own name; nothing is written when this throws.
+		assertUsableProbeField( where, this.volumeTexture.field );
 		this.volumeTexture.resample();
 
 	}
 
-	/** Frees the resampling texture. */
+	/** Frees the resampling texture; the object is unusable afterwards (a second call does nothing). */
 	dispose(): void {
 
 		this.disposed = true;
@@ -137,5 +150,22 @@ function probeBounds( volume: LightProbeVolume ): Box3 {
 
 	const b = boundsOf( volume.positions );
 	return new Box3( new Vector3( b[ 0 ], b[ 1 ], b[ 2 ] ), new Vector3( b[ 3 ], b[ 4 ], b[ 5 ] ) ).expandByScalar( volume.probeSpacing );
+
+}
+
+/** Bounds must be { min, max } with finite corners, min ≤ max on every axis and not a single point. */
+function checkBounds( where: string, bounds: unknown ): void {
+
+	const b = bounds as BoundsLike | null;
+	const corners = b?.min && b?.max ? [ b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z ] : null;
+	if ( corners === null || corners.some( ( v ) => typeof v !== 'number' || ! Number.isFinite( v ) ) ) {
+
+		throw new RangeError( `${where}: options.bounds must be { min, max } with finite x, y, z (e.g. a Box3 of the meshes; an empty Box3 has infinite corners), got ${describeValue( bounds )}.` );
+
+	}
+
+	const size = [ corners[ 3 ] - corners[ 0 ], corners[ 4 ] - corners[ 1 ], corners[ 5 ] - corners[ 2 ] ];
+	if ( size.some( ( s ) => s < 0 ) ) throw new RangeError( `${where}: options.bounds.min must not exceed options.bounds.max, got size (${size.join( ', ' )}).` );
+	if ( ! size.some( ( s ) => s > 0 ) ) throw new RangeError( `${where}: options.bounds is a single point; there is nothing to resample over.` );
 
 }
