@@ -6,7 +6,8 @@ import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 export interface SceneHost {
 
 	scene: THREE.Scene;
-	renderer: THREE.WebGLRenderer;
+	/** A WebGLRenderer or a WebGPURenderer: what a scene sets is their common shadow-map switch. */
+	renderer: { shadowMap: { enabled: boolean; type: THREE.ShadowMapType } };
 	/** Base URL of the asset folder, ending in '/'. */
 	assets: string;
 	overlay: { progress( text: string, fraction: number ): void };

@@ -3,12 +3,13 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import Stats from 'three/addons/libs/stats.module.js';
 import { Overlay } from './Overlay.js';
 import { readDemoQuery, type DemoQuery, type DemoSettings } from './queryParameters.js';
-import { backendLabel, chooseRenderer, createRenderer, initRenderer, watchRendererLoss, type RendererChoice } from './rendererChoice.js';
+import { backendLabel, chooseRenderer, createRenderer, initRenderer, watchRendererLoss, type AnyRenderer, type RendererChoice } from './rendererChoice.js';
 import { recordFrame, type DemoReport } from './report.js';
 
 // ?renderer= is read, and for a WebGPURenderer three/webgpu and three-capture-lighting/webgpu
 // loaded, before any page makes its Viewer, so the constructor can make the renderer at once.
 const rendererChoice = await chooseRenderer();
+const _size = new THREE.Vector2();
 
 /** Where a page's camera starts. */
 export interface ViewerCamera {
@@ -48,10 +49,9 @@ export class Viewer {
 	readonly rendererChoice: RendererChoice = rendererChoice;
 	/**
 	 * Antialiased, filmic tone mapping (`tonemapping=none`: none), drawing buffer kept for screenshots:
-	 * a WebGLRenderer, or with `?renderer=webgpu|webgl2` a WebGPURenderer (typed as WebGLRenderer,
-	 * which the library's capture signatures name; `rendererChoice` says which it is).
+	 * a WebGLRenderer, or with `?renderer=webgpu|webgl2` a WebGPURenderer (`rendererChoice` says which).
 	 */
-	readonly renderer: THREE.WebGLRenderer;
+	readonly renderer: AnyRenderer;
 	/** Resolves once the renderer can render (a WebGPURenderer's `init()`); `ProbeVolumeDemo.start()` waits for it. */
 	readonly ready: Promise<void>;
 	readonly camera: THREE.PerspectiveCamera;
@@ -67,7 +67,7 @@ export class Viewer {
 	constructor( { camera: { position, target, fov = 60, near = 0.05, far = 500 } }: { camera: ViewerCamera } ) {
 
 		const renderer = createRenderer( rendererChoice, { antialias: true, preserveDrawingBuffer: true } );
-		this.renderer = renderer as THREE.WebGLRenderer;
+		this.renderer = renderer;
 		this.renderer.setPixelRatio( Math.min( window.devicePixelRatio, 2 ) );
 		this.renderer.setSize( window.innerWidth, window.innerHeight );
 		// Filmic tone mapping for viewing; ?tonemapping=none keeps colour ratios for measurements.
@@ -130,6 +130,9 @@ export class Viewer {
 
 	private startLoop( frame: ( time: number, delta: number ) => void ): void {
 
+		// ?present=0: the frames go to a target of the canvas's size, never to the screen (a
+		// WebGLRenderTarget: both renderers draw into one).
+		const offscreen = this.query.offscreen ? new THREE.WebGLRenderTarget( 320, 180, { type: THREE.HalfFloatType } ) : null;
 		this.renderer.setAnimationLoop( ( timestamp ) => {
 
 			this.timer.update( timestamp );
@@ -139,7 +142,16 @@ export class Viewer {
 			const start = performance.now();
 
 			frame( this.time, step );
+			if ( offscreen !== null ) {
+
+				this.renderer.getDrawingBufferSize( _size );
+				offscreen.setSize( _size.x, _size.y );
+				this.renderer.setRenderTarget( offscreen );
+
+			}
+
 			this.renderer.render( this.scene, this.camera );
+			if ( offscreen !== null ) this.renderer.setRenderTarget( null );
 
 			this.stats.update();
 			recordFrame( this.report, performance.now() - start, delta * 1000 );

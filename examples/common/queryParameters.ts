@@ -67,6 +67,11 @@ export interface DemoQuery {
 	noToneMapping: boolean;
 	/** `volume=URL`: a baked volume file instead of a capture, or null. */
 	volume: string | null;
+	/**
+	 * `present=0`: frames are drawn into an offscreen render target, not the canvas (tests: headless
+	 * Chromium on SwiftShader loses a WebGPU device soon after its first canvas present).
+	 */
+	offscreen: boolean;
 
 }
 
@@ -107,6 +112,7 @@ export function readDemoQuery( search: string ): DemoQuery {
 		hideGui: params.get( 'hide' ) === 'gui',
 		noToneMapping: params.get( 'tonemapping' ) === 'none',
 		volume: params.get( 'volume' ) || null,
+		offscreen: params.get( 'present' ) === '0',
 	};
 
 }

@@ -1,6 +1,7 @@
 import type * as THREE from 'three';
 import type { LightProbeVolume } from 'three-capture-lighting';
 import type { DynamicObjects } from './DynamicObjects.js';
+import type { AnyRenderer } from './rendererChoice.js';
 import type { ProbeVolumeDemo } from './ProbeVolumeDemo.js';
 import type { DemoSettings } from './queryParameters.js';
 import type { Viewer } from './Viewer.js';
@@ -8,7 +9,8 @@ import type { Viewer } from './Viewer.js';
 /** What a scene page leaves on `window.__demoApp` for the browser tests and the page benchmarks. */
 export interface DemoHandle {
 
-	readonly renderer: THREE.WebGLRenderer;
+	/** The page's renderer: a WebGLRenderer, or a WebGPURenderer (`?renderer=webgpu|webgl2`). */
+	readonly renderer: AnyRenderer;
 	readonly camera: THREE.PerspectiveCamera;
 	/** The panel's state. */
 	readonly params: DemoSettings;

@@ -8,8 +8,8 @@ import type { LightProbeVolume } from './LightProbeVolume.js';
 import type { LightProbeVolumeCaptureOptions } from './LightProbeVolumeOptions.js';
 import type { ProbeField } from './ProbeField.js';
 import { ProbeVertexLighting } from './ProbeVertexLighting.js';
-import { getProbeVolumeUniforms } from './patchMaterial.js';
-import { PROBE_LIT_MATERIALS, isProbeLitMaterial, meshMaterials } from './probeLitMaterials.js';
+import { probeUniformsOf } from './nodeMaterialHooks.js';
+import { PROBE_LIT_MATERIALS, meshMaterials, takesProbeLight } from './probeLitMaterials.js';
 
 /**
  * Options of {@link captureBounces}: the capture options of `LightProbeVolume.capture`, whose
@@ -320,10 +320,14 @@ function isLightable( mesh: Mesh ): boolean {
 
 }
 
-/** The materials of a mesh that a bounce pass lights (see `isProbeLitMaterial`). */
+/**
+ * The materials of a mesh that a bounce pass lights (see `takesProbeLight`): the built-in lit
+ * materials, and with `three-capture-lighting/webgpu` imported the lit node materials too — left
+ * out, node-material scenery would reflect no bounce light and the passes would add less, unnoticed.
+ */
 function probeLitMaterials( mesh: Mesh ): Material[] {
 
-	return meshMaterials( mesh ).filter( isProbeLitMaterial );
+	return meshMaterials( mesh ).filter( takesProbeLight );
 
 }
 
@@ -354,7 +358,7 @@ function checkMeshes( where: string, meshes: readonly Mesh[] ): Mesh[] {
 
 		}
 
-		if ( materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) {
+		if ( materials.some( ( material ) => probeUniformsOf( material ) !== null ) ) {
 
 			throw new Error( `${where}: options.staticMeshes[${i}]${name} already has a probe-lit (patched) material; `
 				+ 'it would receive probe light twice.' );
@@ -380,7 +384,7 @@ function findStaticMeshes( volume: LightProbeVolume, scene: Scene, capture: Ligh
 		if ( ! isLightable( mesh ) ) return;
 		if ( ! seen.some( ( layers ) => mesh.layers.test( layers ) ) ) return;
 		const materials = probeLitMaterials( mesh );
-		if ( materials.length === 0 || materials.some( ( material ) => getProbeVolumeUniforms( material ) !== null ) ) return;
+		if ( materials.length === 0 || materials.some( ( material ) => probeUniformsOf( material ) !== null ) ) return;
 		for ( let node: Object3D | null = mesh; node !== null; node = node.parent ) {
 
 			if ( excluded.has( node ) || volume.getUniforms( node ) !== null ) return;
