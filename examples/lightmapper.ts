@@ -6,7 +6,7 @@ import { unwrapUVs } from 'three/addons/utils/unwrapUVs.js';
 import type { WebGPURenderer } from 'three/webgpu';
 import { LightProbeVolume, placeGrid, ProbeVolumeIrradiance } from 'three-capture-lighting/webgpu';
 import { createBasicRoom } from '@scenes/basic.js';
-import { backendLabel, chooseRenderer, createRenderer, initRenderer, rendererLinks } from './common/rendererChoice.js';
+import { backendLabel, chooseRenderer, createRenderer, initRenderer, rendererLinks, watchRendererLoss } from './common/rendererChoice.js';
 
 // One source of light for both kinds of objects: the room's walls get a light map baked from the
 // probe volume by three's LightMapper, the moving ball is lit by the same volume with volume.add().
@@ -27,6 +27,8 @@ await initRenderer( renderer );
 renderer.setPixelRatio( window.devicePixelRatio );
 renderer.setSize( window.innerWidth, window.innerHeight );
 document.body.appendChild( renderer.domElement );
+// A lost device (or context) would otherwise leave a frozen picture with no word why.
+watchRendererLoss( renderer, ( message ) => { if ( message ) status.textContent = message; } );
 info.append( rendererLinks( backendLabel( renderer ), choice ) );
 if ( choice.notice ) info.append( ` — ${choice.notice}` );
 

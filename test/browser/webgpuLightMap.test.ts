@@ -4,14 +4,34 @@ import { browserSkipReason, startBrowser, type BrowserSession } from '../helpers
 /*
  * Issue 15 interop: the lightmapper example (the Basic room's light map baked from the volume by
  * three's LightMapper through ProbeVolumeIrradiance) loads, captures and bakes without page errors.
- * renderer=webgpu is left out for the "popErrorScope" rejection pagesWebGPU.test.ts skips too.
+ * The source itself is checked exactly, and the bake on both backends, in webgpuLightMapExact.test.ts.
+ *
+ * renderer=webgpu: the page captures and bakes, then its first frame on the canvas loses the
+ * device ("Device was destroyed", then "Instance dropped in popErrorScope"). That is headless
+ * Chromium's WebGPU canvas on SwiftShader, not three or this library: a page of raw WebGPU that
+ * configures a canvas context and submits one clear pass loses its device the same way, while
+ * rendering only into render targets (the exact test, the shading suite) keeps it.
  */
+
+const WEBGPU_CANVAS = 'headless Chromium\'s WebGPU canvas on SwiftShader loses the device on the first presented frame (raw WebGPU too)';
 
 describe.skipIf( browserSkipReason !== '' )( `lightmapper example${browserSkipReason ? ' — SKIPPED: ' + browserSkipReason : ''}`, () => {
 
 	let session: BrowserSession;
 	beforeAll( async () => { session = await startBrowser( { webgpu: true } ); }, 60_000 );
 	afterAll( async () => { await session?.close(); } );
+
+	it.skip( `renderer=webgpu: captures, bakes a light map and renders without page errors — SKIPPED: ${WEBGPU_CANVAS}`, async () => {
+
+		const { page, errors } = await session.open( 'examples/lightmapper.html?renderer=webgpu', { width: 320, height: 180 } );
+		await page.waitForFunction( 'window.lightmapper', { timeout: 150_000 } );
+		const samples = await page.evaluate( 'window.lightmapper.lightMapper.samples' );
+		await new Promise( ( resolve ) => setTimeout( resolve, 1000 ) );
+		await page.close();
+		expect( errors ).toEqual( [] );
+		expect( samples ).toBe( 16 );
+
+	}, 180_000 );
 
 	it( 'renderer=webgl2: captures, bakes a light map and renders without page errors', async () => {
 

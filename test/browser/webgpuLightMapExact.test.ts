@@ -55,10 +55,13 @@ describe.skipIf( browserSkipReason !== '' )( `light-map source on the GPU agains
 				expect( result.backend ).toBe( backend );
 				const kinds = new Set( result.rows.map( ( row ) => row.kind ) );
 				expect( [ ...kinds ] ).toEqual( [ 'inside', 'corner', 'outside', 'zero normal' ] );
-				let caught = 0, inside = 0;
+				let caught = 0, inside = 0, worst = 0, worstAllowed = 0;
 				for ( const row of result.rows ) {
 
 					for ( let c = 0; c < 3; c ++ ) {
+
+						worst = Math.max( worst, Math.abs( row.gpu[ c ] - row.volume[ c ] ) / Math.abs( row.volume[ c ] ) );
+						worstAllowed = Math.max( worstAllowed, tolerance( row, c, type ) / Math.abs( row.volume[ c ] ) );
 
 						// The field is affine in the volume, as the test's premise says.
 						expect( Math.abs( row.volume[ c ] - row.field[ c ] ) ).toBeLessThan( 1e-5 * Math.abs( row.field[ c ] ) + 1e-6 );
@@ -79,6 +82,8 @@ describe.skipIf( browserSkipReason !== '' )( `light-map source on the GPU agains
 
 				// A lookup half a texel off along x would fail nearly every point.
 				expect( caught ).toBeGreaterThanOrEqual( inside - 2 );
+				// For docs/lightmapper.md.
+				console.log( `${backend} ${type}: ${result.rows.length} points, largest |gpu − cpu| / |cpu| ${worst.toExponential( 2 )} (largest allowed ${worstAllowed.toExponential( 2 )})` );
 
 			}, 120_000 );
 
@@ -119,7 +124,7 @@ describe.skipIf( browserSkipReason !== '' )( `light-map source on the GPU agains
 			// (there, times |∂E/∂p| · |p − centre|). A texel is a mean of samples; E is affine in
 			// position along the flat quad, so the mean of E is E at the mean position.
 			const rounding = ( result.samples + 1 ) * 2 ** - 11;
-			let worst = 0;
+			let worst = 0, worstAllowed = 0;
 			for ( const texel of result.texels ) {
 
 				for ( let c = 0; c < 3; c ++ ) {
@@ -128,12 +133,14 @@ describe.skipIf( browserSkipReason !== '' )( `light-map source on the GPU agains
 					const allowed = rounding * ( Math.abs( texel.cpu[ c ] ) + result.gradient * result.radius ) + 1e-6;
 					expect( error, JSON.stringify( texel ) ).toBeLessThanOrEqual( allowed );
 					worst = Math.max( worst, error / Math.abs( texel.cpu[ c ] ) );
+					worstAllowed = Math.max( worstAllowed, allowed / Math.abs( texel.cpu[ c ] ) );
 
 				}
 
 			}
 
 			expect( worst ).toBeGreaterThan( 0 );
+			console.log( `${backend} light map ${result.size}², ${result.samples} samples: largest |gpu − cpu| / |cpu| ${worst.toExponential( 2 )} (largest allowed ${worstAllowed.toExponential( 2 )})` );
 
 		}, 120_000 );
 
