@@ -13,6 +13,11 @@ const BOX_PAD = 1e-6;
 // Two weights closer than this are the same (the same cell, computed from another inverse).
 const SAME_WEIGHT = 1e-12;
 
+// Two unit normals of an outer cell's vertex closer than this per coordinate are the same: the same
+// angle-weighted sums taken in another face order (a few ulps). Weights in an outer cell move by
+// about the normals' change times the point's distance over the cell's size, far below SAME_WEIGHT.
+const SAME_NORMAL = 1e-14;
+
 /**
  * The points of a fit set whose interpolation weights a trial edit of a layout changed, with their
  * new weights: entry f is point `points[ f ]`, blended by local probes `slots[ 4f … 4f + 3 ]` (−1:
@@ -41,6 +46,9 @@ export class ChangedPoints {
 	private readonly cellMatrix = new Float64Array( 12 );
 	private readonly indices = new Uint32Array( 4 );
 	private readonly values = new Float64Array( 4 );
+	// The kept cells of the last `inMesh` (their cellKeys): an open-addressing table, −1 for empty.
+	private table = new Float64Array( 1024 );
+	private tableShift = 22;
 
 	/** @param pointCount Points in the fit set. */
 	constructor( pointCount: number ) {
@@ -59,8 +67,8 @@ export class ChangedPoints {
 	inChangedCells( dynamic: DynamicTetrahedralization, idToLocal: Int32Array, grid: PointGrid, layout: FittedLayout ): number {
 
 		const cells = dynamic.lastEdit.changedCells, tetrahedra = dynamic.tetrahedra, p = dynamic.positions;
-		const points = grid.positions, probes = this.cellProbes, matrix = this.cellMatrix, range = this.range;
-		const start = grid.start, gridPoints = grid.points;
+		const probes = this.cellProbes, matrix = this.cellMatrix, range = this.range;
+		const start = grid.start, gridPoints = grid.points, sorted = grid.sorted;
 		const stamp = ++ this.stamp;
 		this.count = 0;
 		for ( let k = 0; k < cells.length; k ++ ) {
@@ -94,9 +102,9 @@ export class ChangedPoints {
 					const c = grid.cellIndex( gx, gy, gz );
 					for ( let q = start[ c ], end = start[ c + 1 ]; q < end; q ++ ) {
 
-						const j = gridPoints[ q ], x = points[ 3 * j ], y = points[ 3 * j + 1 ], z = points[ 3 * j + 2 ];
+						const x = sorted[ 3 * q ], y = sorted[ 3 * q + 1 ], z = sorted[ 3 * q + 2 ];
 						if ( x < loX || x > hiX || y < loY || y > hiY || z < loZ || z > hiZ ) continue;
-						this.tryPoint( j, points, probes, layout, stamp );
+						this.tryPoint( gridPoints[ q ], x, y, z, probes, layout, stamp );
 
 					}
 
@@ -110,12 +118,15 @@ export class ChangedPoints {
 
 	}
 
-	/** Records point j when it lies in the cell of `cellMatrix` / `probes` (and was in no earlier one) and its weights changed. */
-	private tryPoint( j: number, points: Float64Array, probes: Int32Array, layout: FittedLayout, stamp: number ): void {
+	/**
+	 * Records point j, at (x, y, z), when it lies in the cell of `cellMatrix` / `probes` (and was in
+	 * no earlier one) and its weights changed.
+	 */
+	private tryPoint( j: number, x: number, y: number, z: number, probes: Int32Array, layout: FittedLayout, stamp: number ): void {
 
 		const matrix = this.cellMatrix;
 		if ( this.seen[ j ] === stamp ) return; // already placed in another changed cell
-		const dx = points[ 3 * j ] - matrix[ 9 ], dy = points[ 3 * j + 1 ] - matrix[ 10 ], dz = points[ 3 * j + 2 ] - matrix[ 11 ];
+		const dx = x - matrix[ 9 ], dy = y - matrix[ 10 ], dz = z - matrix[ 11 ];
 		const w0 = matrix[ 0 ] * dx + matrix[ 1 ] * dy + matrix[ 2 ] * dz;
 		const w1 = matrix[ 3 ] * dx + matrix[ 4 ] * dy + matrix[ 5 ] * dz;
 		const w2 = matrix[ 6 ] * dx + matrix[ 7 ] * dy + matrix[ 8 ] * dz;
@@ -139,16 +150,27 @@ export class ChangedPoints {
 	): number {
 
 		const indices = this.indices, values = this.values, probes = this.cellProbes, slots = layout.slots;
-		const kept = interpolator instanceof TetrahedralMesh ? keptCells( interpolator, moved, layout.order.length ) : null;
+		const kept = interpolator instanceof TetrahedralMesh;
+		if ( kept ) this.keepCells( interpolator, moved, layout.order.length );
+		const keys = innerKeys( layout );
+		const before = layout.interpolator;
+		const keptOuter = interpolator instanceof TetrahedralMesh && before instanceof TetrahedralMesh
+			? keptOuterCells( interpolator, before, moved ) : null;
+		const outerStart = before instanceof TetrahedralMesh ? before.cellCount : 0, cells = layout.cells;
 		let hint = - 1;
 		this.count = 0;
 		for ( let v = 0; v < visitOrder.length; v ++ ) {
 
 			const j = visitOrder[ v ];
-			// An inner point whose tetrahedron (all 4 weights > 0) is still a cell keeps its weights.
+			// An inner point whose tetrahedron (all 4 weights > 0) is still a cell keeps its weights; so does
+			// an outer point whose outer cell is still one, unchanged.
 			const o = 4 * j;
-			const inner = kept !== null && layout.outside[ j ] === 0;
-			if ( inner && kept.has( cellKey( slots[ o ], slots[ o + 1 ], slots[ o + 2 ], slots[ o + 3 ] ) ) ) continue;
+			if ( layout.outside[ j ] === 0 ) {
+
+				if ( kept && keys[ j ] >= 0 && this.hasKey( keys[ j ] ) ) continue;
+
+			} else if ( keptOuter !== null && keptOuter[ cells[ j ] - outerStart ] === 1 ) continue;
+
 			values.fill( 0 );
 			hint = interpolator.interpolate( positions[ 3 * j ], positions[ 3 * j + 1 ], positions[ 3 * j + 2 ], indices, values, hint );
 			for ( let s = 0; s < 4; s ++ ) probes[ s ] = indices[ s ];
@@ -160,6 +182,49 @@ export class ChangedPoints {
 		}
 
 		return this.count;
+
+	}
+
+	/**
+	 * Fills the table with the cells of `mesh` that the layout's mesh may share: those without the
+	 * edited probe (`moved`, or the inserted one, `size`).
+	 */
+	private keepCells( mesh: TetrahedralMesh, moved: number, size: number ): void {
+
+		const edited = moved >= 0 ? moved : size, t = mesh.tetrahedra, cells = mesh.cellCount;
+		let bits = 10;
+		while ( ( 1 << bits ) < 4 * cells ) bits ++;
+		if ( this.table.length !== 1 << bits ) this.table = new Float64Array( 1 << bits );
+		this.table.fill( - 1 );
+		this.tableShift = 32 - bits;
+		const table = this.table, mask = table.length - 1;
+		for ( let k = 0; k < cells; k ++ ) {
+
+			const a = t[ 4 * k ], b = t[ 4 * k + 1 ], c = t[ 4 * k + 2 ], d = t[ 4 * k + 3 ];
+			if ( a === edited || b === edited || c === edited || d === edited ) continue;
+			const key = cellKey( a, b, c, d );
+			if ( key < 0 ) continue;
+			let slot = keySlot( key, this.tableShift );
+			while ( table[ slot ] >= 0 && table[ slot ] !== key ) slot = ( slot + 1 ) & mask;
+			table[ slot ] = key;
+
+		}
+
+	}
+
+	/** Whether cell key `key` is in the table of kept cells. */
+	private hasKey( key: number ): boolean {
+
+		const table = this.table, mask = table.length - 1;
+		let slot = keySlot( key, this.tableShift );
+		for ( ;; ) {
+
+			const entry = table[ slot ];
+			if ( entry === key ) return true;
+			if ( entry < 0 ) return false;
+			slot = ( slot + 1 ) & mask;
+
+		}
 
 	}
 
@@ -251,21 +316,75 @@ function cellKey( a: number, b: number, c: number, d: number ): number {
 
 }
 
-/** The cells of `mesh` that the layout's mesh may share: those without the edited probe (`moved`, or the inserted one, `size`). */
-function keptCells( mesh: TetrahedralMesh, moved: number, size: number ): Set<number> {
+/**
+ * Per outer cell of `before` (a layout's mesh), 1 when `mesh` (the layout edited) has the same
+ * cell: the same hull triangle, none of its vertices the moved probe, and the same outward normals
+ * at its vertices (to {@link SAME_NORMAL}: the sums' order) — the same swept region, and weights in it
+ * that {@link ChangedPoints.inMesh} would find the same as the layout's.
+ * @param moved Local probe that moved (−1 for an insertion: the new probe is in no cell of `before`).
+ */
+function keptOuterCells( mesh: TetrahedralMesh, before: TetrahedralMesh, moved: number ): Uint8Array {
 
-	const edited = moved >= 0 ? moved : size;
-	const out = new Set<number>();
-	const t = mesh.tetrahedra;
-	for ( let k = 0; k < mesh.cellCount; k ++ ) {
+	const now = mesh.outerCells, then = before.outerCells, kept = new Uint8Array( then.count );
+	if ( now.exponent !== then.exponent ) return kept; // another local frame: the normals are not comparable
+	const faces = new Map<number, number>();
+	for ( let f = 0; f < now.count; f ++ ) faces.set( faceKey( now.faces, f ), f );
+	const a = now.normals, b = then.normals;
+	for ( let f = 0; f < then.count; f ++ ) {
 
-		const a = t[ 4 * k ], b = t[ 4 * k + 1 ], c = t[ 4 * k + 2 ], d = t[ 4 * k + 3 ];
-		if ( a === edited || b === edited || c === edited || d === edited ) continue;
-		const key = cellKey( a, b, c, d );
-		if ( key >= 0 ) out.add( key );
+		if ( ! faces.has( faceKey( then.faces, f ) ) ) continue;
+		let same = true;
+		for ( let v = 0; v < 3 && same; v ++ ) {
+
+			const i = then.faces[ 3 * f + v ], k = 3 * i;
+			same = i !== moved && Math.abs( a[ k ] - b[ k ] ) <= SAME_NORMAL && Math.abs( a[ k + 1 ] - b[ k + 1 ] ) <= SAME_NORMAL
+				&& Math.abs( a[ k + 2 ] - b[ k + 2 ] ) <= SAME_NORMAL;
+
+		}
+
+		if ( same ) kept[ f ] = 1;
 
 	}
 
+	return kept;
+
+}
+
+/** A key for hull triangle f of `faces` (its 3 probes in any order; probes below 2²⁰). */
+function faceKey( faces: Uint32Array, f: number ): number {
+
+	let a = faces[ 3 * f ], b = faces[ 3 * f + 1 ], c = faces[ 3 * f + 2 ], t: number;
+	if ( a > b ) { t = a; a = b; b = t; }
+	if ( b > c ) { t = b; b = c; c = t; }
+	if ( a > b ) { t = a; a = b; b = t; }
+	return ( a * 1048576 + b ) * 1048576 + c;
+
+}
+
+/** The table slot of a cell key (< 2⁵²): its two 32-bit halves mixed, the top bits kept. */
+function keySlot( key: number, shift: number ): number {
+
+	const low = key | 0, high = ( key / 4294967296 ) | 0;
+	return Math.imul( low ^ Math.imul( high, 0x27d4eb2d ), 0x9e3779b1 ) >>> shift;
+
+}
+
+/** Per point of `layout`, the {@link cellKey} of its tetrahedron (−1 outside the hull or on a cell's boundary). */
+function innerKeys( layout: FittedLayout ): Float64Array {
+
+	const known = keyCache.get( layout );
+	if ( known ) return known;
+	const slots = layout.slots, count = layout.outside.length, out = new Float64Array( count );
+	for ( let j = 0; j < count; j ++ ) {
+
+		const o = 4 * j;
+		out[ j ] = layout.outside[ j ] === 1 ? - 1 : cellKey( slots[ o ], slots[ o + 1 ], slots[ o + 2 ], slots[ o + 3 ] );
+
+	}
+
+	keyCache.set( layout, out );
 	return out;
 
 }
+
+const keyCache = new WeakMap<FittedLayout, Float64Array>();

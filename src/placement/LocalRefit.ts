@@ -304,6 +304,26 @@ export class LocalRefit {
 				const i = slots[ offset + s ];
 				if ( i < 0 ) continue;
 				const w = weights[ offset + s ];
+				if ( stride === 1 ) {
+
+					// No gradient unknowns: the weight alone.
+					if ( i === edited ) {
+
+						factors[ 0 ] = w;
+						blended = true;
+
+					} else {
+
+						heldBase[ held ] = 27 * i;
+						heldFactors[ 4 * held ] = w;
+						held ++;
+
+					}
+
+					continue;
+
+				}
+
 				const fx = w * ( x - positions[ 3 * i ] ) / h, fy = w * ( y - positions[ 3 * i + 1 ] ) / h;
 				const fz = w * ( z - positions[ 3 * i + 2 ] ) / h;
 				if ( i === edited ) {
@@ -337,12 +357,42 @@ export class LocalRefit {
 			const t0 = 27 * j;
 			if ( stride === 1 ) {
 
+				// Unrolled by the number of held probes (0 to 3), subtracted in slot order as a loop would.
 				const fu = share * factors[ 0 ];
-				for ( let k = 0; k < 27; k ++ ) {
+				const h0 = heldBase[ 0 ], h1 = heldBase[ 1 ], h2 = heldBase[ 2 ];
+				const g0 = heldFactors[ 0 ], g1 = heldFactors[ 4 ], g2 = heldFactors[ 8 ];
+				if ( held === 3 ) {
 
-					let value = sh[ t0 + k ];
-					for ( let e = 0; e < held; e ++ ) value -= heldFactors[ 4 * e ] * unknowns[ heldBase[ e ] + k ];
-					rhs[ k ] += fu * value;
+					for ( let k = 0; k < 27; k ++ ) {
+
+						let value = sh[ t0 + k ];
+						value -= g0 * unknowns[ h0 + k ];
+						value -= g1 * unknowns[ h1 + k ];
+						value -= g2 * unknowns[ h2 + k ];
+						rhs[ k ] += fu * value;
+
+					}
+
+				} else if ( held === 2 ) {
+
+					for ( let k = 0; k < 27; k ++ ) {
+
+						let value = sh[ t0 + k ];
+						value -= g0 * unknowns[ h0 + k ];
+						value -= g1 * unknowns[ h1 + k ];
+						rhs[ k ] += fu * value;
+
+					}
+
+				} else {
+
+					for ( let k = 0; k < 27; k ++ ) {
+
+						let value = sh[ t0 + k ];
+						for ( let e = 0; e < held; e ++ ) value -= heldFactors[ 4 * e ] * unknowns[ heldBase[ e ] + k ];
+						rhs[ k ] += fu * value;
+
+					}
 
 				}
 

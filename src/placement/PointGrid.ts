@@ -19,6 +19,9 @@ export class PointGrid {
 	/** Point indices, cell by cell. */
 	readonly points: Int32Array;
 
+	/** The points' coordinates in the order of `points` (x, y, z of `points[ q ]` at 3q): a cell's points read in sequence. */
+	readonly sorted: Float64Array;
+
 	/** @param positions x, y, z per point (at least one). */
 	constructor( positions: Float64Array ) {
 
@@ -48,6 +51,8 @@ export class PointGrid {
 		this.points = new Int32Array( count );
 		const fill = this.start.slice( 0, cells );
 		for ( let p = 0; p < count; p ++ ) this.points[ fill[ cellOf[ p ] ] ++ ] = p;
+		this.sorted = new Float64Array( 3 * count );
+		for ( let q = 0; q < count; q ++ ) this.sorted.set( positions.subarray( 3 * this.points[ q ], 3 * this.points[ q ] + 3 ), 3 * q );
 
 	}
 

@@ -93,6 +93,9 @@ export interface FittedLayout {
 	/** Per point: 1 when outside the probes' hull (outer cells). */
 	outside: Uint8Array;
 
+	/** Per point, the cell the interpolator returned for it (its hint: ≥ the tetrahedra count for an outer cell). */
+	cells: Int32Array;
+
 	/** Per local probe: 1 when it is a vertex of the hull. */
 	hullVertex: Uint8Array;
 
@@ -163,6 +166,7 @@ export function fitLayout(
 	let hint = - 1, spread = 0;
 	// The fit located every point already when it kept them all (no zero weights): read its design.
 	const fromDesign = design.count === count && design.slots === 4;
+	const pointCells = fromDesign ? design.cells : new Int32Array( count );
 	if ( fromDesign ) slotsFromDesign( design, cells, slots, slotWeights, outside );
 	for ( let v = 0; v < count && ! fromDesign; v ++ ) {
 
@@ -170,6 +174,7 @@ export function fitLayout(
 		const x = points[ 3 * j ], y = points[ 3 * j + 1 ], z = points[ 3 * j + 2 ];
 		_weights.fill( 0 );
 		hint = interpolator.interpolate( x, y, z, _indices, _weights, hint );
+		pointCells[ j ] = hint;
 		outside[ j ] = hint >= cells ? 1 : 0;
 		for ( let s = 0; s < 4; s ++ ) {
 
@@ -211,7 +216,7 @@ export function fitLayout(
 
 	return {
 		order: order.slice(), positions, interpolator, result, unknowns, rows, stride, lengthScale, reached,
-		slots, slotWeights, outside, hullVertex, errors, summary: summarizeErrors( errors, context.givenWeights ),
+		slots, slotWeights, outside, cells: pointCells, hullVertex, errors, summary: summarizeErrors( errors, context.givenWeights ),
 		adjacencyStart, adjacency,
 	};
 
@@ -306,6 +311,22 @@ export function predictedError(
 	// The blended row minus the truth, its largest channel summed over the normals (pointIrradianceError, inlined).
 	const truth = context.truth, t = rowStride * j;
 	let sum = 0;
+	if ( stride === 1 && n === 3 ) {
+
+		// An outer cell's point: the fourth slot would add ±0, which changes no sum (it never starts at −0).
+		for ( let k = 0; k < rowStride; k += 3 ) {
+
+			const r = Math.abs( blend3( rows, k, b0, w0, b1, w1, b2, w2 ) - truth[ t + k ] );
+			const g = Math.abs( blend3( rows, k + 1, b0, w0, b1, w1, b2, w2 ) - truth[ t + k + 1 ] );
+			const b = Math.abs( blend3( rows, k + 2, b0, w0, b1, w1, b2, w2 ) - truth[ t + k + 2 ] );
+			sum += r > g ? ( r > b ? r : b ) : ( g > b ? g : b );
+
+		}
+
+		return sum * context.scale;
+
+	}
+
 	if ( stride === 1 ) {
 
 		for ( let k = 0; k < rowStride; k += 3 ) {
@@ -321,7 +342,22 @@ export function predictedError(
 
 	}
 
-	for ( let k = 0; k < rowStride; k += 3 ) {
+	// The loop below without the fourth probe, for an outer cell's point (it would add ±0, as above).
+	for ( let k = 0; n === 3 && k < rowStride; k += 3 ) {
+
+		let r = 0, g = 0, b = 0;
+		r += blend4( rows, rowStride, k, b0, w0, x0, y0, z0 ); g += blend4( rows, rowStride, k + 1, b0, w0, x0, y0, z0 );
+		b += blend4( rows, rowStride, k + 2, b0, w0, x0, y0, z0 );
+		r += blend4( rows, rowStride, k, b1, w1, x1, y1, z1 ); g += blend4( rows, rowStride, k + 1, b1, w1, x1, y1, z1 );
+		b += blend4( rows, rowStride, k + 2, b1, w1, x1, y1, z1 );
+		r += blend4( rows, rowStride, k, b2, w2, x2, y2, z2 ); g += blend4( rows, rowStride, k + 1, b2, w2, x2, y2, z2 );
+		b += blend4( rows, rowStride, k + 2, b2, w2, x2, y2, z2 );
+		r = Math.abs( r - truth[ t + k ] ); g = Math.abs( g - truth[ t + k + 1 ] ); b = Math.abs( b - truth[ t + k + 2 ] );
+		sum += r > g ? ( r > b ? r : b ) : ( g > b ? g : b );
+
+	}
+
+	for ( let k = 0; n !== 3 && k < rowStride; k += 3 ) {
 
 		let r = 0, g = 0, b = 0;
 		r += blend4( rows, rowStride, k, b0, w0, x0, y0, z0 ); g += blend4( rows, rowStride, k + 1, b0, w0, x0, y0, z0 );
@@ -351,6 +387,17 @@ function blend1(
 	v += w1 * rows[ b1 + k ];
 	v += w2 * rows[ b2 + k ];
 	v += w3 * rows[ b3 + k ];
+	return v;
+
+}
+
+/** {@link blend1} of 3 probes. */
+function blend3( rows: Float64Array, k: number, b0: number, w0: number, b1: number, w1: number, b2: number, w2: number ): number {
+
+	let v = 0;
+	v += w0 * rows[ b0 + k ];
+	v += w1 * rows[ b1 + k ];
+	v += w2 * rows[ b2 + k ];
 	return v;
 
 }

@@ -83,14 +83,17 @@ function replacements(
 
 	}
 
-	const claimOf = candidateClaims( context, layout );
-	const claim = ( p: number ): number => claimOf[ p ];
+	// The worstCount largest claims, largest first (ties by rank: a strict order), by insertion.
+	const claim = candidateClaims( context, layout );
 	const worst: number[] = [];
 	for ( let p = 0; p < context.denseCount; p ++ ) {
 
-		if ( selected[ p ] === 1 || out.includes( p ) || ! ( claim( p ) > 0 ) ) continue;
-		worst.push( p );
-		worst.sort( ( a, b ) => claim( b ) - claim( a ) || rank[ a ] - rank[ b ] );
+		if ( selected[ p ] === 1 || ! ( claim[ p ] > 0 ) || out.includes( p ) ) continue;
+		let at = worst.length;
+		const before = ( q: number ): boolean => claim[ q ] > claim[ p ] || ( claim[ q ] === claim[ p ] && rank[ q ] < rank[ p ] );
+		while ( at > 0 && ! before( worst[ at - 1 ] ) ) at --;
+		if ( at >= worstCount ) continue;
+		worst.splice( at, 0, p );
 		if ( worst.length > worstCount ) worst.pop();
 
 	}
