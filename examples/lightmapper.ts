@@ -93,11 +93,17 @@ const gui = new GUI();
 gui.add( params, 'scenery', [ 'light map', 'probe-lit per object' ] ).onChange( setScenery );
 gui.add( params, 'samples', 1, 256, 1 ).onFinishChange( bake );
 
+// ?present=0 (tests): frames go to a render target, never to the canvas — headless Chromium on
+// SwiftShader loses a WebGPU device soon after its first canvas present (as the demo pages' flag).
+const offscreen = new URLSearchParams( location.search ).get( 'present' ) === '0' ? new THREE.RenderTarget( 320, 180, { type: THREE.HalfFloatType } ) : null;
+
 renderer.setAnimationLoop( ( time ) => {
 
 	character.position.set( 1.2 * Math.sin( time / 2000 ), 0.3, 1.2 * Math.cos( time / 2000 ) );
 	volume.update();
+	renderer.setRenderTarget( offscreen );
 	renderer.render( scene, camera );
+	renderer.setRenderTarget( null );
 
 } );
 
