@@ -1,4 +1,4 @@
-import { BufferAttribute, InterleavedBuffer, InterleavedBufferAttribute, Matrix3, type BufferGeometry, type Material, type Mesh } from 'three';
+import { BackSide, BufferAttribute, InterleavedBuffer, InterleavedBufferAttribute, Matrix3, type BufferGeometry, type Material, type Mesh } from 'three';
 import { irradianceAt } from '../sh/irradiance.js';
 import { blendProbes } from './gradientBlend.js';
 import { GradientTracker } from './gradientTracker.js';
@@ -14,8 +14,10 @@ export interface ProbeVertexLightingOptions {
 	/**
 	 * What each vertex stores:
 	 * - `'irradiance'` (default): E(n) for the vertex's world normal, one vec3 attribute
-	 *   (`probeIrradiance`, 12 bytes a vertex). Normal and bump maps do not change the probe light
-	 *   (it is fixed per vertex), and a normal that changes within a triangle is only interpolated.
+	 *   (`probeIrradiance`, 12 bytes a vertex), for −n when every lit material is `BackSide` (the
+	 *   normal it shades with; `DoubleSide` takes n: use `'sh'` for walls seen from both sides).
+	 *   Normal and bump maps do not change the probe light (it is fixed per vertex), and a normal
+	 *   that changes within a triangle is only interpolated.
 	 * - `'sh'`: the blended SH itself, 7 vec4 attributes (`probeSH0`…`probeSH6`, 112 bytes a vertex,
 	 *   one interleaved buffer), evaluated per pixel with the shaded normal: normal maps respond.
 	 *   Costs 7 of WebGL2's 16 guaranteed vertex attributes and 7 varyings.
@@ -248,6 +250,9 @@ export class ProbeVertexLighting {
 		const positions = directArray( position ), ps = position.itemSize;
 		const normals = directArray( normal ), ns = normal?.itemSize ?? 0;
 		const n = irradiance ? _normalMatrix.getNormalMatrix( this.mesh.matrixWorld ).elements : null;
+		// A BackSide material is shaded with the flipped normal (an inward-facing room): its E is for -n.
+		let sign = - 1;
+		for ( const material of this.clones ) if ( material.side !== BackSide ) sign = 1;
 		let hint = - 1;
 		for ( let i = 0; i < count; i ++ ) {
 
@@ -269,8 +274,8 @@ export class ProbeVertexLighting {
 				let x = n[ 0 ] * nx0 + n[ 3 ] * ny0 + n[ 6 ] * nz0;
 				let y = n[ 1 ] * nx0 + n[ 4 ] * ny0 + n[ 7 ] * nz0;
 				let z = n[ 2 ] * nx0 + n[ 5 ] * ny0 + n[ 8 ] * nz0;
-				const length = Math.sqrt( x * x + y * y + z * z );
-				if ( length > 0 ) { x /= length; y /= length; z /= length; }
+				const length = sign * Math.sqrt( x * x + y * y + z * z );
+				if ( length !== 0 ) { x /= length; y /= length; z /= length; }
 				irradianceAt( _sh, 0, x, y, z, out, 3 * i );
 
 			} else {

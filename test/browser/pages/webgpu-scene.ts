@@ -66,13 +66,15 @@ interface Bounced { passes: Float32Array[]; statics: number; lighting: string | 
  * passes), or with `add` the volume lights it itself (`volume.add( scene )`: its own mode, from
  * the previous pass's probes).
  */
-async function bouncedSH( renderer: THREE.WebGLRenderer | WebGPURenderer, scene: THREE.Scene, add = false ): Promise<Bounced> {
+async function bouncedSH(
+	renderer: THREE.WebGLRenderer | WebGPURenderer, scene: THREE.Scene, add = false, output: 'irradiance' | 'sh' = 'irradiance',
+): Promise<Bounced> {
 
 	const volume = new LightProbeVolume( { positions: PROBES } );
 	if ( add ) volume.add( scene );
 	const passes: Float32Array[] = [];
 	const { staticMeshes } = await captureBounces( volume, renderer, scene, {
-		bounces: 2, resolution: SIZE, onPass: ( _pass, sh ) => passes.push( sh.slice() ),
+		bounces: 2, resolution: SIZE, output, onPass: ( _pass, sh ) => passes.push( sh.slice() ),
 	} );
 	const lighting = volume.getLighting( scene.getObjectByName( 'room' )! );
 	volume.dispose();
@@ -178,6 +180,7 @@ async function run(): Promise<void> {
 
 		const truth = await bouncedSH( gl, basicRoom( false ).scene );
 		const truthAdded = await bouncedSH( gl, basicRoom( false ).scene, true );
+		const truthSH = await bouncedSH( gl, basicRoom( false ).scene, false, 'sh' );
 		const summary = ( run: Bounced, against: Bounced ) => ( {
 			passes: run.passes.length, statics: run.statics, lighting: run.lighting,
 			meanL00: run.passes.map( meanL00 ),
@@ -189,6 +192,12 @@ async function run(): Promise<void> {
 			plain: summary( await bouncedSH( renderer, basicRoom( false ).scene ), truth ),
 			webglAdded: summary( truthAdded, truthAdded ),
 			nodeAdded: summary( await bouncedSH( renderer, basicRoom( true ).scene, true ), truthAdded ),
+			// output 'sh': the bounce scenery stores the blended SH per vertex (the vertexSH variant).
+			webglSH: summary( truthSH, truthSH ),
+			nodeSH: summary( await bouncedSH( renderer, basicRoom( true ).scene, false, 'sh' ), truthSH ),
+			// Per-vertex irradiance against per-vertex SH evaluated per pixel with the normal the (BackSide)
+			// walls are shaded with: equal on flat walls, where E is linear in the SH across a triangle.
+			irradianceVersusSH: truth.passes.map( ( sh, i ) => worstError( sh, truthSH.passes[ i ] ) ),
 		};
 
 	}
