@@ -25,6 +25,8 @@ export class LocalRefit {
 	private readonly grid: PointGrid;
 	private readonly changed: ChangedPoints;
 	private layout: FittedLayout;
+	// Trials that move the hull edit the tetrahedralization in place too (outer cells held): `hullTrials: 'local'`.
+	private readonly localHull: boolean;
 
 	// Mesh point id ↔ local probe (a trial id gets the next local index, P, while it lives).
 	private idToLocal = new Int32Array( 64 ).fill( - 1 );
@@ -53,9 +55,10 @@ export class LocalRefit {
 	private readonly heldBase = new Int32Array( 4 );
 	private readonly heldFactors = new Float64Array( 16 );
 
-	private constructor( context: RefitContext, dynamic: DynamicTetrahedralization, layout: FittedLayout ) {
+	private constructor( context: RefitContext, dynamic: DynamicTetrahedralization, layout: FittedLayout, localHull: boolean ) {
 
 		this.context = context;
+		this.localHull = localHull;
 		this.dynamic = dynamic;
 		this.grid = new PointGrid( context.positions );
 		const count = context.weights.length;
@@ -72,13 +75,14 @@ export class LocalRefit {
 	/**
 	 * Trials over `layout`, or null when its probes cannot be tetrahedralized in 3D (a flat layout,
 	 * coincident probes): then every trial is fitted exactly.
+	 * @param localHull Estimate trials that move the hull in place too, outer cells held (`hullTrials: 'local'`).
 	 */
-	static create( context: RefitContext, layout: FittedLayout ): LocalRefit | null {
+	static create( context: RefitContext, layout: FittedLayout, localHull = false ): LocalRefit | null {
 
 		try {
 
 			const dynamic = new DynamicTetrahedralization( layout.positions );
-			return dynamic.duplicates.length === 0 ? new LocalRefit( context, dynamic, layout ) : null;
+			return dynamic.duplicates.length === 0 ? new LocalRefit( context, dynamic, layout, localHull ) : null;
 
 		} catch ( error ) {
 
@@ -120,7 +124,7 @@ export class LocalRefit {
 	tryInsert( c: number ): number {
 
 		const { context, layout } = this, p = context.positions, local = layout.order.length;
-		if ( layout.outside[ c ] === 1 ) {
+		if ( layout.outside[ c ] === 1 && ! this.localHull ) {
 
 			const positions = new Float64Array( 3 * ( local + 1 ) );
 			positions.set( layout.positions );
@@ -157,7 +161,7 @@ export class LocalRefit {
 	tryMove( r: number, c: number ): number {
 
 		const { context, layout } = this, p = context.positions, id = this.localToId[ r ], back = layout.positions;
-		if ( layout.hullVertex[ r ] === 1 || layout.outside[ c ] === 1 ) {
+		if ( ( layout.hullVertex[ r ] === 1 || layout.outside[ c ] === 1 ) && ! this.localHull ) {
 
 			const positions = back.slice();
 			positions.set( p.subarray( 3 * c, 3 * c + 3 ), 3 * r );

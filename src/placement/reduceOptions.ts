@@ -59,6 +59,8 @@ export interface ReduceSettings {
 	swapPasses: number;
 	/** Replacements tried per probe and swap pass. */
 	swapTrials: number;
+	/** How trials that move the hull are estimated. */
+	hullTrials: 'relocate' | 'local';
 	fitSet: FitSet;
 
 }
@@ -116,9 +118,16 @@ export function readReduceOptions(
 
 	const swapTrials = options.swapTrials ?? DEFAULT_SWAP_TRIALS;
 	assertInteger( where, 'options.swapTrials', swapTrials, 1 );
+	const hullTrials = options.hullTrials ?? 'relocate';
+	if ( hullTrials !== 'relocate' && hullTrials !== 'local' ) {
+
+		throw new RangeError( `${where}: options.hullTrials must be 'relocate' or 'local', got ${describeValue( hullTrials )}.` );
+
+	}
+
 	return {
 		targetCount, targetError, statistic, seed, strategy, trials, normals, directions, required, fit,
-		swapTrials, swapPasses: readSwaps( where, options.swaps, fit !== null ),
+		swapTrials, hullTrials, swapPasses: readSwaps( where, options.swaps, fit !== null ),
 		fitSet: readFitSet( where, positions, sh, count, options ),
 	};
 

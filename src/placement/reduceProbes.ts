@@ -74,6 +74,15 @@ export interface ReduceProbesOptions {
 	 */
 	swapTrials?: number;
 
+	/**
+	 * How an insertion or swap trial that moves the probes' hull is estimated (only with `fit`):
+	 * `'relocate'` (default) locates the points in a new interpolator of the edited layout, outer
+	 * cells included; `'local'` edits the layout's tetrahedralization in place, as for a trial inside
+	 * the hull, and takes only the points of its changed tetrahedra (outer cells held) — faster, a
+	 * rougher ranking (the kept edit is still fitted exactly), other layouts (docs/placement.md).
+	 */
+	hullTrials?: 'relocate' | 'local';
+
 	/** Where the light matters most: weights both the choice of probes and the reported error ({@link regionWeights}). */
 	region?: RegionOfInterest;
 

@@ -29,7 +29,7 @@ export function refitReduce( where: string, settings: ReduceSettings, subset: Su
 	const { lambda, gradientLambda } = stepLambdas( context, settings, subset, rank );
 	const history: ReductionRun[ 'history' ] = { count: [], mean: [], p95: [], max: [] };
 	let layout = fitLayout( context, order, lambda, gradientLambda );
-	const local = LocalRefit.create( context, layout );
+	const local = LocalRefit.create( context, layout, settings.hullTrials === 'local' );
 	const cache = new TrialCache( context.denseCount );
 
 	for ( ;; ) {

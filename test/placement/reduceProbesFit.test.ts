@@ -238,6 +238,21 @@ describe( 'reduceProbes with fit (re-fit at every insertion) and swap passes', (
 
 	} );
 
+	it( 'hullTrials \'local\': swap passes still only lower the fitted error, and the error reported is the layout\'s own fit', () => {
+
+		// At a fixed λ the swap passes keep a swap only when the exact fit's error drops, however trials are ranked.
+		const options = { targetCount: 14, fit: { lambda: 0.3 }, fitSamples, hullTrials: 'local' as const };
+		const local = reduceProbes( dense, sh, options ), none = reduceProbes( dense, sh, { ...options, swaps: false } );
+		const relocate = reduceProbes( dense, sh, { ...options, hullTrials: 'relocate' } );
+		expect( local.keep.length ).toBe( 14 );
+		expect( local.error.mean ).toBeLessThan( none.error.mean );
+		expect( relocate.error.mean ).toBeLessThan( none.error.mean );
+		// The reported error is the layout's own fit (measured independently): the option changes no fit.
+		const refit = reduceProbes( dense, sh, { ...options, keep: Array.from( local.keep ), swaps: false } );
+		expect( refit.error.mean ).toBeCloseTo( local.error.mean, 12 );
+
+	} );
+
 	it( 'fits gradients when asked (the gradient objective), and they lower the error on this field', () => {
 
 		const plain = reduceProbes( dense, sh, { targetCount: 12, fit: { lambda: 0.3 }, swaps: false, fitSamples } );
@@ -296,6 +311,8 @@ describe( 'reduceProbes with fit (re-fit at every insertion) and swap passes', (
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, swaps: true } ) ).toThrow( /^reduceProbes: options.swaps needs options.fit/ );
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: true, swaps: - 1 } ) ).toThrow( /^reduceProbes: options.swaps must be an integer ≥ 0/ );
 		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: true, swapTrials: 0 } ) ).toThrow( /^reduceProbes: options.swapTrials must be an integer ≥ 1/ );
+		expect( () => reduceProbes( few, fewSH, { targetCount: 5, fit: true, hullTrials: 'exact' as never } ) )
+			.toThrow( /^reduceProbes: options.hullTrials must be 'relocate' or 'local', got the string "exact"/ );
 
 	} );
 
