@@ -7,7 +7,7 @@ import { fullscreenVert, shGatherFrag, shProjectCubeFrag, shProjectEquirectFrag,
 import type { CubeSolidAngleMode } from '../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, assertOptionalBoolean, assertOptions, describeValue } from '../validate.js';
 import { CAPTURE_SOLID_ANGLES, assertWebGLRenderer } from './captureSettings.js';
-import { createSolidAngleTexture } from './solidAngleTexture.js';
+import { createEquirectTableTexture, createSolidAngleTexture } from './solidAngleTexture.js';
 
 // Rows of the projection targets: probes per batch × tiles must fit a texture everywhere WebGL2 runs.
 const MAX_ROWS = 4096;
@@ -166,7 +166,10 @@ export class SHProjector {
 		for ( let i = 0; i < MAX_CUBES_PER_DRAW; i ++ ) cube[ `cubeMap${i}` ] = { value: null };
 		for ( let face = 0; face < 6; face ++ ) cube[ `face${face}` ] = { value: null };
 		cube.atlas = { value: null };
-		const equirect = { panorama: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] }, rowOffset: { value: 0 } };
+		const equirect: Uniforms = {
+			panorama: { value: null }, directions: { value: null }, size: { value: [ 0, 0 ] }, block: { value: [ 1, 1 ] },
+			rowOffset: { value: 0 },
+		};
 		const reduce: Uniforms = { factor: { value: 4 } };
 		const gather: Uniforms = { factor: { value: 1 } };
 		for ( let plane = 0; plane < PLANES; plane ++ ) {
@@ -308,6 +311,7 @@ export class SHProjector {
 		} else {
 
 			const u = this.equirectMaterials[ 0 ].uniforms;
+			u.directions.value = this.equirectTable( size, height );
 			u.size.value = [ size, height ];
 			u.block.value = [ Math.ceil( size / tiles ), Math.ceil( height / tiles ) ];
 
@@ -634,6 +638,16 @@ export class SHProjector {
 		const key = `${size}:${mode}`;
 		let texture = this.solidAngleTextures.get( key );
 		if ( ! texture ) this.solidAngleTextures.set( key, texture = createSolidAngleTexture( size, mode ) );
+		return texture;
+
+	}
+
+	/** The direction and solid-angle table of a panorama size, made once per projector (kept with the solid-angle textures). */
+	private equirectTable( width: number, height: number ): DataTexture {
+
+		const key = `equirect:${width}x${height}`;
+		let texture = this.solidAngleTextures.get( key );
+		if ( ! texture ) this.solidAngleTextures.set( key, texture = createEquirectTableTexture( width, height ) );
 		return texture;
 
 	}

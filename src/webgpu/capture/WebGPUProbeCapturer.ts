@@ -7,13 +7,16 @@ import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, SH_LIMIT, assertInteger, assertPoints, describeValue, firstBeyond } from '../../validate.js';
 import { WebGPUSHProjector } from './WebGPUSHProjector.js';
 import { WebGPUShadowFreeze } from './WebGPUShadowFreeze.js';
+import { WebGPUCubeFaces } from './WebGPUCubeFaces.js';
 import { deviceLostError, isDeviceLost, watchDevice } from './deviceLoss.js';
 
 /**
- * `ProbeCapturer` for `WebGPURenderer` (`three/webgpu`, either backend): renders a cube map at
- * each probe with three's `CubeCamera` into a `CubeRenderTarget` (HalfFloat by default,
- * NearestFilter), projects it to SH9 on the GPU ({@link WebGPUSHProjector}: compute kernels on the
- * WebGPU backend, fragment passes on the WebGL2 one) and reads each batch back once. The same
+ * `ProbeCapturer` for `WebGPURenderer` (`three/webgpu`, either backend): renders the six faces at
+ * each probe (HalfFloat by default, NearestFilter), projects them to SH9 on the GPU
+ * ({@link WebGPUSHProjector}) and reads each batch back once. On the WebGPU backend the faces are
+ * six 2D targets laid out texel for texel as WebGLRenderer's cube faces ({@link WebGPUCubeFaces}),
+ * projected by compute kernels reading them by index; on the WebGL2 backend three's `CubeCamera`
+ * renders a `CubeRenderTarget`, projected by fragment passes. The same
  * settings, options, batching, progress, hiding and shadow rules as `ProbeCapturer`; a lost
  * device or context throws a named error and leaves `target` as it was.
  *
@@ -32,11 +35,14 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 	/** Cube face edge in texels. */
 	readonly resolution: number;
 
-	/** The cube render target every probe is rendered into. */
-	readonly cubeRenderTarget: CubeRenderTarget;
+	/** WebGL2 backend: the cube render target every probe is rendered into (null on the WebGPU backend). */
+	readonly cubeRenderTarget: CubeRenderTarget | null = null;
 
-	/** The cube camera; its position is set to each probe in turn. */
-	readonly cubeCamera: CubeCamera;
+	/** WebGL2 backend: the cube camera, set to each probe in turn (null on the WebGPU backend). */
+	readonly cubeCamera: CubeCamera | null = null;
+
+	/** WebGPU backend: the six face targets and cameras, set to each probe in turn (null on WebGL2). */
+	readonly faces: WebGPUCubeFaces | null = null;
 
 	/** The GPU projection. */
 	readonly projector: WebGPUSHProjector;
@@ -61,11 +67,20 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 		this.renderer = renderer;
 		this.resolution = resolution;
 		this.solidAngle = solidAngle;
-		this.cubeRenderTarget = new CubeRenderTarget( resolution, {
-			type: type as TextureDataType, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
-		} );
-		this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
 		this.projector = new WebGPUSHProjector( renderer );
+		if ( this.projector.compute ) {
+
+			this.faces = new WebGPUCubeFaces( resolution, near, far, type as TextureDataType );
+
+		} else {
+
+			this.cubeRenderTarget = new CubeRenderTarget( resolution, {
+				type: type as TextureDataType, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false,
+			} );
+			this.cubeCamera = new CubeCamera( near, far, this.cubeRenderTarget );
+
+		}
+
 		watchDevice( renderer );
 
 	}
@@ -96,10 +111,11 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 		}
 
 		if ( this.busy ) throw new Error( `${where}: a capture is already running on this capturer; await it first (or use a second capturer).` );
-		const { renderer, cubeCamera, projector, shadowMaps } = this;
+		const { renderer, cubeCamera, faces, projector, shadowMaps } = this;
 		this.checkDevice( where );
-		const savedLayers = cubeCamera.children.map( ( camera ) => camera.layers.mask );
-		if ( options.layers ) for ( const camera of cubeCamera.children ) camera.layers.mask = options.layers.mask;
+		const cameras = faces ? faces.cameras : cubeCamera!.children;
+		const savedLayers = cameras.map( ( camera ) => camera.layers.mask );
+		if ( options.layers ) for ( const camera of cameras ) camera.layers.mask = options.layers.mask;
 		const autoClear = renderer.autoClear;
 		const batch = WebGPUSHProjector.batchCapacity( this.resolution );
 		const result = new Float32Array( SH_FLOATS * count );
@@ -112,6 +128,7 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 			shadowMaps.begin( scene, renderer.shadowMap.enabled );
 			hidden = hideForCapture( scene, options );
 			scene.updateMatrixWorld();
+			faces?.prepare( scene );
 			for ( let start = 0; start < count; start += batch ) {
 
 				const size = Math.min( batch, count - start );
@@ -119,11 +136,7 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 				for ( let i = start; i < start + size; i ++ ) {
 
 					this.checkDevice( where );
-					cubeCamera.position.set( positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
-					cubeCamera.updateMatrixWorld();
-					renderer.autoClear = true; // every face must start cleared
-					cubeCamera.update( renderer, scene );
-					projector.add( this.cubeRenderTarget.texture );
+					this.renderFaces( scene, positions[ 3 * i ], positions[ 3 * i + 1 ], positions[ 3 * i + 2 ] );
 					options.onProgress?.( i + 1, count );
 
 					// A frame for the page now and then (its progress bar), with the hidden objects shown.
@@ -135,6 +148,7 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 						await nextTask();
 						shadowMaps.resume();
 						hidden = hideForCapture( scene, options );
+						faces?.prepare( scene ); // meshes added meanwhile
 						lastYield = captureClock();
 
 					}
@@ -156,8 +170,9 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 		} finally {
 
 			shadowMaps.end();
+			faces?.release();
 			renderer.autoClear = autoClear;
-			cubeCamera.children.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
+			cameras.forEach( ( camera, i ) => { camera.layers.mask = savedLayers[ i ]; } );
 			showAfterCapture( hidden );
 			this.busy = false;
 
@@ -177,16 +192,40 @@ export class WebGPUProbeCapturer implements ProbeCapturerLike {
 
 	}
 
+	/** Renders the six faces at ( x, y, z ) and hands them to the projector's batch. */
+	private renderFaces( scene: Scene, x: number, y: number, z: number ): void {
+
+		const { renderer, faces, cubeCamera, projector } = this;
+		if ( faces ) {
+
+			faces.rig.position.set( x, y, z );
+			faces.rig.updateMatrixWorld( true );
+			faces.render( renderer, scene );
+			projector.addFaces( faces.targets.map( ( target ) => target.texture ) );
+
+		} else {
+
+			cubeCamera!.position.set( x, y, z );
+			cubeCamera!.updateMatrixWorld();
+			renderer.autoClear = true; // every face must start cleared
+			cubeCamera!.update( renderer, scene );
+			projector.add( this.cubeRenderTarget!.texture );
+
+		}
+
+	}
+
 	private checkDevice( where: string ): void {
 
 		if ( isDeviceLost( this.renderer ) ) throw deviceLostError( where, this.renderer );
 
 	}
 
-	/** Frees the cube render target and the projection's buffers, textures and kernels. */
+	/** Frees the face targets (or cube render target) and the projection's buffers, textures and kernels. */
 	dispose(): void {
 
-		this.cubeRenderTarget.dispose();
+		this.cubeRenderTarget?.dispose();
+		this.faces?.dispose();
 		this.projector.dispose();
 
 	}

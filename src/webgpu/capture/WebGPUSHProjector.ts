@@ -6,8 +6,8 @@ import { Fn, cubeTexture, instanceIndex, instancedArray, int, ivec2, screenCoord
 import type { CubeSolidAngleMode } from '../../sh/projectCubeMapToSH.js';
 import { SH_FLOATS, assertInteger, describeValue } from '../../validate.js';
 import { CAPTURE_SOLID_ANGLES } from '../../capture/captureSettings.js';
-import { createSolidAngleTexture } from '../../capture/solidAngleTexture.js';
-import { cubeTileSums, equirectTileSums, loop, packPlanes, type TSLNode } from './shProjectionNodes.js';
+import { createEquirectTableTexture, createSolidAngleTexture } from '../../capture/solidAngleTexture.js';
+import { cubeTileSums, equirectTileSums, faceTileSums, loop, packPlanes, type TSLNode } from './shProjectionNodes.js';
 
 // Rows of the fragment path's partial sums (probes × tiles), as the WebGL projector.
 const MAX_ROWS = 4096;
@@ -57,7 +57,9 @@ export class WebGPUSHProjector {
 
 	private readonly cube = cubeTexture( new CubeTexture(), vec3( 0, 0, 1 ) );
 	private readonly panorama = texture( new Texture(), vec2( 0.5, 0.5 ) );
+	private readonly faces = [ 0, 1, 2, 3, 4, 5 ].map( () => texture( new Texture() ) );
 	private readonly solidAngles = texture();
+	private readonly directions = texture();
 	private readonly size = uniform( 1, 'int' );
 	private readonly height = uniform( 1, 'int' );
 	private readonly block = uniform( 1, 'int' );
@@ -126,6 +128,7 @@ export class WebGPUSHProjector {
 
 		} else {
 
+			this.directions.value = this.equirectTable( size, height );
 			this.block.value = Math.ceil( size / tiles );
 			this.blockY.value = Math.ceil( height / tiles );
 
@@ -153,6 +156,25 @@ export class WebGPUSHProjector {
 
 		}
 
+		this.count ++;
+
+	}
+
+	/**
+	 * Projects the next cube map of a `'cube'` batch given as six 2D face textures (+X, −X, +Y, −Y,
+	 * +Z, −Z, NearestFilter) laid out as WebGL's cube faces (docs/cube-faces.md), read by texel
+	 * index: what WebGPUCubeFaces renders on the WebGPU backend. Compute path only.
+	 */
+	addFaces( faces: readonly Texture[] ): void {
+
+		const where = 'WebGPUSHProjector.addFaces';
+		if ( this.source !== 'cube' ) throw new Error( `${where}: call begin( 'cube', … ) first.` );
+		if ( ! this.compute ) throw new Error( `${where}: needs the WebGPU backend (compute); on WebGL2 give add() a cube texture.` );
+		if ( faces.length !== 6 ) throw new RangeError( `${where}: faces must hold 6 textures, got ${faces.length}.` );
+		if ( this.count >= this.capacity ) throw new Error( `${where}: the batch holds ${this.capacity} sources; call finish() first.` );
+		faces.forEach( ( face, f ) => { this.faces[ f ].value = face; } );
+		this.slot.value = this.count;
+		this.renderer.compute( this.passesFor( 'faces', this.tiles ).project );
 		this.count ++;
 
 	}
@@ -250,15 +272,21 @@ export class WebGPUSHProjector {
 	}
 
 	/** The project and gather passes of `source` at `tiles` (the buffers they address are the current ones). */
-	private passesFor( source: 'cube' | 'equirect', tiles: number ): Passes {
+	private passesFor( source: 'cube' | 'faces' | 'equirect', tiles: number ): Passes {
 
 		const key = `${source}:${tiles}:${this.bufferCapacity}`;
 		let passes = this.passes.get( key );
 		if ( passes ) return passes;
 
-		const tileSums = ( tileX: TSLNode, tileY: TSLNode ) => source === 'cube'
-			? cubeTileSums( this.cube, this.solidAngles, this.size, this.block, tileX, tileY )
-			: equirectTileSums( this.panorama, { x: this.size, y: this.height }, { x: this.block, y: this.blockY }, tileX, tileY );
+		const tileSums = ( tileX: TSLNode, tileY: TSLNode ) => {
+
+			if ( source === 'cube' ) return cubeTileSums( this.cube, this.solidAngles, this.size, this.block, tileX, tileY );
+			if ( source === 'faces' ) return faceTileSums( this.faces, this.solidAngles, this.size, this.block, tileX, tileY );
+			const size = { x: this.size, y: this.height }, block = { x: this.block, y: this.blockY };
+			return equirectTileSums( this.panorama, this.directions, size, block, tileX, tileY );
+
+		};
+
 		const perProbe = tiles * tiles;
 		if ( this.compute ) {
 
@@ -337,6 +365,16 @@ export class WebGPUSHProjector {
 		const key = `${size}:${mode}`;
 		let texture = this.solidAngleTextures.get( key );
 		if ( ! texture ) this.solidAngleTextures.set( key, texture = createSolidAngleTexture( size, mode ) );
+		return texture;
+
+	}
+
+	/** The direction and solid-angle table of a panorama size (as `SHProjector`'s), made once per projector. */
+	private equirectTable( width: number, height: number ): DataTexture {
+
+		const key = `equirect:${width}x${height}`;
+		let texture = this.solidAngleTextures.get( key );
+		if ( ! texture ) this.solidAngleTextures.set( key, texture = createEquirectTableTexture( width, height ) );
 		return texture;
 
 	}

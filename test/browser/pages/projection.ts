@@ -1,6 +1,6 @@
 import * as THREE from 'three';
-import { projectCubeMapToSH } from 'three-capture-lighting/math';
-import { SHProjector } from 'three-capture-lighting/capture';
+import { projectCubeMapToSH, projectEquirectToSH } from 'three-capture-lighting/math';
+import { SHProjector, projectEquirectToSHGPU } from 'three-capture-lighting/capture';
 
 // The GPU projection in Chromium, with multiple render targets (what browsers use; headless-gl
 // cannot) and with the four-draw fallback, against the CPU projection of the read-back faces.
@@ -56,6 +56,29 @@ for ( const size of [ 8, 32, 100, 128 ] ) {
 	}
 
 	target.dispose();
+
+}
+
+// Panoramas (random HDR texels over a ramp, so a flipped row or column order shows) against the
+// CPU projection of the same texels, at power-of-two and odd sizes.
+for ( const [ width, height ] of [ [ 64, 32 ], [ 100, 49 ], [ 256, 128 ] ] ) {
+
+	const pixels = new Float32Array( width * height * 4 );
+	let seed = 11;
+	for ( let i = 0; i < pixels.length; i ++ ) {
+
+		seed = ( seed * 16807 ) % 2147483647;
+		const texel = i >> 2, row = Math.floor( texel / width ), column = texel % width;
+		pixels[ i ] = seed / 2147483647 + 2 * row / height + column / width;
+
+	}
+
+	const panorama = new THREE.DataTexture( pixels, width, height, THREE.RGBAFormat, THREE.FloatType );
+	panorama.minFilter = panorama.magFilter = THREE.NearestFilter;
+	panorama.needsUpdate = true;
+	const cpu = projectEquirectToSH( pixels, width, height, { rowOrder: 'bottom-up' } );
+	result[ `panorama ${width}x${height}` ] = worstError( projectEquirectToSHGPU( renderer, panorama ), cpu );
+	panorama.dispose();
 
 }
 

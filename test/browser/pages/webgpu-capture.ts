@@ -1,5 +1,5 @@
 import * as THREE from 'three';
-import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { MeshBasicNodeMaterial, RenderTarget, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec3 } from 'three/tsl';
 import { projectCubeMapToSH, projectEquirectToSH } from 'three-capture-lighting/math';
 import { projectEquirectToSHGPU } from 'three-capture-lighting/capture';
@@ -45,6 +45,11 @@ function room(): THREE.Scene {
 
 	}
 
+	// A sprite (not a mesh: its front face is not flipped by three, WebGPUCubeFaces swaps its side instead).
+	const sprite = new THREE.Sprite( new THREE.SpriteMaterial( { color: 0xffc000 } ) );
+	sprite.position.set( - 1.5, - 1, - 2.5 );
+	sprite.scale.set( 1.5, 1, 1 );
+	scene.add( sprite );
 	return scene;
 
 }
@@ -91,56 +96,102 @@ async function run(): Promise<void> {
 	const probeSH = ( sh: Float32Array, p: number ) => sh.slice( 27 * p, 27 * p + 27 );
 	result.webglPerProbe = [ 0, 1, 2, 3 ].map( ( p ) => worstError( probeSH( volumeGPU.sh, p ), probeSH( volumeGL.sh, p ) ) );
 
-	// The projection alone: this renderer's SH of a cube map against the CPU projection of its read-back faces.
+	// The faces texel by texel against WebGLRenderer's CubeCamera faces at each probe (float RGBA, face f
+	// row 0 first as readRenderTargetPixels returns them), and the projection alone: this renderer's SH of
+	// a probe against the CPU projection of its read-back faces.
 	const capturer = new WebGPUProbeCapturer( renderer, { resolution: SIZE } );
-	const own = await capturer.capture( room(), PROBES.slice( 0, 3 ), new Float32Array( 27 ) );
-	const faces: Float32Array[] = [];
-	for ( let face = 0; face < 6; face ++ ) {
+	const glTarget = new THREE.WebGLCubeRenderTarget( SIZE, {
+		type: THREE.HalfFloatType, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
+	} );
+	const glCamera = new THREE.CubeCamera( 0.05, 1000, glTarget );
+	const glRoom = room();
+	const readFaces = async ( from = capturer, size = SIZE ): Promise<Float32Array[]> => {
 
-		// WebGPU stores the faces mirrored in x (three's TSL flips the lookup): +X and −X swap, columns reverse.
-		const stored = backend === 'webgpu' ? ( face === 0 ? 1 : face === 1 ? 0 : face ) : face;
-		const half = await renderer.readRenderTargetPixelsAsync( capturer.cubeRenderTarget, 0, 0, SIZE, SIZE, 0, stored ) as Uint16Array;
-		const texels = new Float32Array( 4 * SIZE * SIZE );
-		for ( let y = 0; y < SIZE; y ++ ) {
+		const faces: Float32Array[] = [];
+		for ( let face = 0; face < 6; face ++ ) {
 
-			for ( let x = 0; x < SIZE; x ++ ) {
+			// WebGPU backend: six 2D targets laid out as WebGL's faces; WebGL2 backend: three's cube target, the
+			// same layout there.
+			const half = ( from.faces
+				? await renderer.readRenderTargetPixelsAsync( from.faces.targets[ face ], 0, 0, size, size )
+				: await renderer.readRenderTargetPixelsAsync( from.cubeRenderTarget!, 0, 0, size, size, 0, face ) ) as Uint16Array;
+			faces.push( Float32Array.from( half, ( h ) => THREE.DataUtils.fromHalfFloat( h ) ) );
 
-				const from = 4 * ( SIZE * y + ( backend === 'webgpu' ? SIZE - 1 - x : x ) );
-				for ( let c = 0; c < 4; c ++ ) texels[ 4 * ( SIZE * y + x ) + c ] = THREE.DataUtils.fromHalfFloat( half[ from + c ] );
+		}
+
+		return faces;
+
+	};
+
+	const faceDiffs: number[] = [];
+	const shOne = new Float32Array( 27 );
+	for ( let p = 0; p < 4; p ++ ) {
+
+		await capturer.capture( room(), PROBES.concat( [ 0, 0, 0 ] ).slice( 3 * p, 3 * p + 3 ), shOne );
+		const faces = await readFaces();
+		if ( p === 0 ) result.projectionError = worstError( shOne, projectCubeMapToSH( faces, SIZE ) );
+		glCamera.position.fromArray( PROBES.concat( [ 0, 0, 0 ] ), 3 * p );
+		glCamera.updateMatrixWorld();
+		glCamera.update( gl, glRoom );
+		let differing = 0;
+		for ( let face = 0; face < 6; face ++ ) {
+
+			const half = new Uint16Array( 4 * SIZE * SIZE );
+			gl.readRenderTargetPixels( glTarget, 0, 0, SIZE, SIZE, half, face );
+			for ( let t = 0; t < SIZE * SIZE; t ++ ) {
+
+				let off = 0;
+				for ( let c = 0; c < 3; c ++ ) {
+
+					off = Math.max( off, Math.abs( THREE.DataUtils.fromHalfFloat( half[ 4 * t + c ] ) - faces[ face ][ 4 * t + c ] ) );
+
+				}
+
+				if ( off > 1e-3 ) differing ++;
 
 			}
 
 		}
 
-		faces.push( texels );
+		faceDiffs.push( differing );
 
 	}
 
-	result.projectionError = worstError( own, projectCubeMapToSH( faces, SIZE ) );
+	result.faceDiffs = faceDiffs;
+	// The projection alone at an odd size too (its middle row and column are their own mirror images).
+	const odd = new WebGPUProbeCapturer( renderer, { resolution: 15 } );
+	await odd.capture( room(), PROBES.slice( 3, 6 ), shOne );
+	result.projectionErrorOdd = worstError( shOne, projectCubeMapToSH( await readFaces( odd, 15 ), 15 ) );
+	odd.dispose();
+	glTarget.dispose();
 	capturer.dispose();
 	result.webglL00 = volumeGL.sh[ 0 ];
 	gl.dispose();
+	// Panoramas (random HDR texels), against the CPU projection of the same texels, at a power-of-two
+	// and an odd size.
+	result.panoramaError = 0;
+	for ( const [ width, height ] of [ [ 64, 32 ], [ 100, 49 ] ] ) {
 
-	// A panorama (random HDR texels), against the CPU projection of the same texels.
-	const width = 64, height = 32;
-	const pixels = new Float32Array( width * height * 4 );
-	let seed = 7;
-	// Random texels over a ramp up the panorama and along it, so a flipped row or column order shows.
-	for ( let i = 0; i < pixels.length; i ++ ) {
+		const pixels = new Float32Array( width * height * 4 );
+		let seed = 7;
+		// Random texels over a ramp up the panorama and along it, so a flipped row or column order shows.
+		for ( let i = 0; i < pixels.length; i ++ ) {
 
-		seed = ( seed * 16807 ) % 2147483647;
-		const texel = i >> 2, row = Math.floor( texel / width ), column = texel % width;
-		pixels[ i ] = seed / 2147483647 + 2 * row / height + column / width;
+			seed = ( seed * 16807 ) % 2147483647;
+			const texel = i >> 2, row = Math.floor( texel / width ), column = texel % width;
+			pixels[ i ] = seed / 2147483647 + 2 * row / height + column / width;
+
+		}
+
+		const panorama = new THREE.DataTexture( pixels, width, height, THREE.RGBAFormat, THREE.FloatType );
+		panorama.minFilter = panorama.magFilter = THREE.NearestFilter;
+		panorama.needsUpdate = true;
+		const cpu = projectEquirectToSH( pixels, width, height, { rowOrder: 'bottom-up' } );
+		const gpu = await projectEquirectToSHGPU( renderer, panorama );
+		result.panoramaError = Math.max( result.panoramaError as number, worstError( gpu, cpu ) );
+		panorama.dispose();
 
 	}
-
-	const panorama = new THREE.DataTexture( pixels, width, height, THREE.RGBAFormat, THREE.FloatType );
-	panorama.minFilter = panorama.magFilter = THREE.NearestFilter;
-	panorama.needsUpdate = true;
-	const cpu = projectEquirectToSH( pixels, width, height, { rowOrder: 'bottom-up' } );
-	const gpu = await projectEquirectToSHGPU( renderer, panorama );
-	result.panoramaError = worstError( gpu, cpu );
-	panorama.dispose();
 
 	// Create → capture → dispose: what the renderer holds after a cycle is what it held before.
 	const memory = () => {
@@ -159,11 +210,64 @@ async function run(): Promise<void> {
 
 	};
 
+	// A view of the room drawn before and after the captures: the faces' mirrored front faces (WebGPU
+	// backend) must not leak into ordinary draws of the same meshes and materials.
+	const view = new RenderTarget( 32, 32 );
+	const viewCamera = new THREE.PerspectiveCamera( 70, 1, 0.05, 100 );
+	viewCamera.position.set( 0.5, 0.2, 0.3 );
+	viewCamera.lookAt( 3, 0, - 2 );
+	const drawView = async () => {
+
+		renderer.setRenderTarget( view );
+		renderer.render( scene, viewCamera );
+		renderer.setRenderTarget( null );
+		return await renderer.readRenderTargetPixelsAsync( view, 0, 0, 32, 32 ) as Uint8Array;
+
+	};
+
+	const viewBefore = await drawView();
 	await cycle(); // the scene's own geometries and textures come to the GPU once
 	const before = memory();
 	for ( let i = 0; i < 3; i ++ ) await cycle();
 	result.memoryBefore = before;
 	result.memoryAfter = memory();
+	const viewAfter = await drawView();
+	view.dispose();
+	result.viewUnchanged = viewBefore.length === 4 * 32 * 32 && viewBefore.every( ( value, i ) => value === viewAfter[ i ] );
+	// Red, green and grey in the view: the box and the (back-sided) walls were drawn.
+	result.viewColours = [ ...new Set( Array.from( { length: 32 * 32 }, ( _, i ) => viewBefore.slice( 4 * i, 4 * i + 3 ).join() ) ) ];
+	let ownDeterminants = 0;
+	scene.traverse( ( object ) => { if ( Object.prototype.hasOwnProperty.call( object.matrixWorld, 'determinant' ) ) ownDeterminants ++; } );
+	result.ownDeterminants = ownDeterminants;
+
+	// A shadow-casting light: its map is drawn inside the first face's draw, from the light's camera. The
+	// mirrored front face of the WebGPU backend's face cameras must not reach that nested draw.
+	const lit = room();
+	const sun = new THREE.DirectionalLight( 0xffffff, 2 );
+	sun.position.set( 2, 3, 1 );
+	sun.castShadow = true;
+	lit.add( sun );
+	const caster = lit.children[ 1 ] as THREE.Mesh;
+	caster.castShadow = true;
+	const walls = lit.children[ 0 ] as THREE.Mesh;
+	walls.material = new THREE.MeshStandardMaterial( { color: 0x8090a0, side: THREE.BackSide } );
+	walls.receiveShadow = true;
+	const draws = { face: 0, faceFlipped: 0, other: 0, otherFlipped: 0 };
+	const shadowCapturer = new WebGPUProbeCapturer( renderer, { resolution: 8 } );
+	const faceCameras: unknown[] = shadowCapturer.faces ? [ ...shadowCapturer.faces.cameras ] : [ ...shadowCapturer.cubeCamera!.children ];
+	caster.onBeforeRender = ( _renderer, _scene, camera ) => {
+
+		const face = faceCameras.includes( camera ), flipped = caster.matrixWorld.determinantAffine() < 0;
+		if ( face ) { draws.face ++; if ( flipped ) draws.faceFlipped ++; } else { draws.other ++; if ( flipped ) draws.otherFlipped ++; }
+
+	};
+
+	renderer.shadowMap.enabled = true;
+	await shadowCapturer.capture( lit, [ 0, 0, 0 ], new Float32Array( 27 ) );
+	renderer.shadowMap.enabled = false;
+	caster.onBeforeRender = () => {};
+	shadowCapturer.dispose();
+	result.shadowDraws = draws;
 
 	// A lost device or context in the middle of a capture: the named error, the SH kept.
 	const kept = new LightProbeVolume( { positions: PROBES } );
