@@ -45,6 +45,11 @@ describe.skipIf( browserSkipReason !== '' )( `WebGPURenderer capture (Chromium)$
 			expect( draws.other, 'draws of the caster into the shadow map' ).toBeGreaterThan( 0 );
 			expect( draws.faceFlipped ).toBe( backend === 'webgpu' ? draws.face : 0 );
 			expect( draws.otherFlipped ).toBe( 0 );
+			// A double-sided Lambert plane seen and lit from its back: lit as on WebGLRenderer (a wrong `frontFacing`
+			// in the face cameras' draws turns its normal away: L00 0; measured equal to WebGLRenderer's, session 22).
+			const [ backGPU, backGL ] = result.backLitL00 as number[];
+			expect( backGL, 'WebGLRenderer sees the lit back' ).toBeGreaterThan( 0.1 );
+			expect( Math.abs( backGPU - backGL ) / backGL, 'double-sided plane seen from its back' ).toBeLessThan( 1e-3 );
 			// Panoramas at 64 × 32 and 100 × 49: directions and row solid angles from a float64 table (with the
 			// shader's float32 sin / cos, SwiftShader's, the quadratic coefficients were 3.3e-4 of L00 off).
 			expect( result.panoramaError, 'panorama against the CPU projection' ).toBeLessThan( 1e-4 );

@@ -269,6 +269,27 @@ async function run(): Promise<void> {
 	shadowCapturer.dispose();
 	result.shadowDraws = draws;
 
+	// A double-sided lit plane seen from its back, lit from that side: `frontFacing` (hence the normal) must be
+	// WebGL's in the face cameras' draws, or the plane goes dark. Against WebGLRenderer (other shader code:
+	// close, not equal).
+	const backLit = new THREE.Scene();
+	const plane = new THREE.Mesh( new THREE.PlaneGeometry( 6, 6 ), new THREE.MeshLambertMaterial( { color: 0xffffff, side: THREE.DoubleSide } ) );
+	plane.position.set( 0, 0, - 1 );
+	plane.rotation.y = Math.PI; // its front faces −Z: the probe at the origin, and the light from +Z, see its back
+	backLit.add( plane );
+	const lamp = new THREE.DirectionalLight( 0xffffff, 1 );
+	lamp.position.set( 0, 0, 1 );
+	backLit.add( lamp );
+	const backGL = new LightProbeVolume( { positions: [ 0, 0, 0 ] } );
+	const glAgain = new THREE.WebGLRenderer();
+	await backGL.capture( glAgain, backLit, { resolution: 8 } );
+	glAgain.dispose();
+	const backGPU = new LightProbeVolume( { positions: [ 0, 0, 0 ] } );
+	await backGPU.capture( renderer, backLit, { resolution: 8 } );
+	result.backLitL00 = [ backGPU.sh[ 0 ], backGL.sh[ 0 ] ];
+	backGL.dispose();
+	backGPU.dispose();
+
 	// A lost device or context in the middle of a capture: the named error, the SH kept.
 	const kept = new LightProbeVolume( { positions: PROBES } );
 	await kept.capture( renderer, scene, { resolution: 8 } );
