@@ -342,22 +342,7 @@ export function predictedError(
 
 	}
 
-	// The loop below without the fourth probe, for an outer cell's point (it would add ±0, as above).
-	for ( let k = 0; n === 3 && k < rowStride; k += 3 ) {
-
-		let r = 0, g = 0, b = 0;
-		r += blend4( rows, rowStride, k, b0, w0, x0, y0, z0 ); g += blend4( rows, rowStride, k + 1, b0, w0, x0, y0, z0 );
-		b += blend4( rows, rowStride, k + 2, b0, w0, x0, y0, z0 );
-		r += blend4( rows, rowStride, k, b1, w1, x1, y1, z1 ); g += blend4( rows, rowStride, k + 1, b1, w1, x1, y1, z1 );
-		b += blend4( rows, rowStride, k + 2, b1, w1, x1, y1, z1 );
-		r += blend4( rows, rowStride, k, b2, w2, x2, y2, z2 ); g += blend4( rows, rowStride, k + 1, b2, w2, x2, y2, z2 );
-		b += blend4( rows, rowStride, k + 2, b2, w2, x2, y2, z2 );
-		r = Math.abs( r - truth[ t + k ] ); g = Math.abs( g - truth[ t + k + 1 ] ); b = Math.abs( b - truth[ t + k + 2 ] );
-		sum += r > g ? ( r > b ? r : b ) : ( g > b ? g : b );
-
-	}
-
-	for ( let k = 0; n !== 3 && k < rowStride; k += 3 ) {
+	for ( let k = 0; k < rowStride; k += 3 ) {
 
 		let r = 0, g = 0, b = 0;
 		r += blend4( rows, rowStride, k, b0, w0, x0, y0, z0 ); g += blend4( rows, rowStride, k + 1, b0, w0, x0, y0, z0 );
