@@ -1,11 +1,15 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { join, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { spawnSync, type SpawnSyncReturns } from 'node:child_process';
+import type { Rollup } from 'vite';
 import { readmeExampleModule } from './readmeExample.js';
+import { FURNACE_RADIANCE, WRONG_WEBGPU, readmeWebGPUModule, readmeWebGPUPage } from './readmeWebGPU.js';
+import { serveFolder } from './staticServer.js';
 import { viteBundle } from './viteBundle.js';
+import { checkChromium, launchChromium, resolveChromiumPath } from '../../cli/chromium.js';
 
 /*
  * The package as a user gets it: `npm run build`'s output (scripts/build.mjs, into a copy of the
@@ -13,7 +17,10 @@ import { viteBundle } from './viteBundle.js';
  * with `three` and `@types/three` — what the README's install lines do. In that project: the
  * README's example type-checks with `tsc --strict` (and a wrong call does not), the main entry
  * loads in plain Node, `npx capture-lighting --help` and `inspect` run, and a Vite build of the
- * example's import keeps the CLI and the tools out. The tarball's sizes and the bundle's are
+ * example's import keeps the CLI and the tools out. The README's WebGPURenderer example too: it
+ * type-checks, a Vite build of it as a page bundles `three-capture-lighting/webgpu` without the CLI,
+ * and (with Chromium) the page runs it on the WebGL2 backend in a furnace room and reads the
+ * character lit by the volume. The tarball's sizes and the bundle's are
  * written to test/output/fresh-project.json. Needs the npm registry (or its cache) for three,
  * @types/three and the package's two dependencies, and takes 40 s on an idle machine (a full build,
  * an install, tsc over all of @types/three) and minutes under load, so `npm test` skips it:
@@ -30,6 +37,8 @@ interface Packed { filename: string; size: number; unpackedSize: number; entryCo
 let work = '';
 let packed: Packed;
 let app = '';
+let page = '';
+let built = '';
 
 function run( command: string, args: string[], cwd: string, timeout = 180_000 ): SpawnSyncReturns<string> {
 
@@ -87,21 +96,26 @@ describe.skipIf( skipReason !== '' )( `a fresh project installs the packed packa
 
 	} );
 
-	it( 'the README\'s example type-checks with tsc --strict against the installed .d.ts (and @types/three), and a wrong call does not', () => {
+	it( 'the README\'s examples (WebGLRenderer and WebGPURenderer) type-check with tsc --strict against the installed .d.ts (and @types/three), and wrong calls do not', () => {
 
 		writeFileSync( join( app, 'example.ts' ), readmeExampleModule( ROOT ) );
+		writeFileSync( join( app, 'webgpuExample.ts' ), readmeWebGPUModule( ROOT ) );
 		writeFileSync( join( app, 'wrong.ts' ), 'import { LightProbeVolume } from \'three-capture-lighting\';\nnew LightProbeVolume( { positions: \'0, 0, 0\' } );\n' );
+		writeFileSync( join( app, 'wrongWebGPU.ts' ), WRONG_WEBGPU );
 		const compilerOptions = {
 			strict: true, noEmit: true, target: 'ES2022', module: 'ESNext', moduleResolution: 'Bundler', lib: [ 'ES2022', 'DOM' ], types: [],
 			skipLibCheck: false,
 		};
 		const tsc = resolve( ROOT, 'node_modules/typescript/bin/tsc' );
-		writeFileSync( join( app, 'tsconfig.json' ), JSON.stringify( { compilerOptions, files: [ 'example.ts' ] } ) );
-		expectOk( run( process.execPath, [ tsc, '-p', 'tsconfig.json' ], app ), 'tsc --strict on the README\'s example' );
-		writeFileSync( join( app, 'tsconfig.wrong.json' ), JSON.stringify( { compilerOptions, files: [ 'wrong.ts' ] } ) );
+		// One tsc run per verdict: each reads all of @types/three, the slow part.
+		writeFileSync( join( app, 'tsconfig.json' ), JSON.stringify( { compilerOptions, files: [ 'example.ts', 'webgpuExample.ts' ] } ) );
+		expectOk( run( process.execPath, [ tsc, '-p', 'tsconfig.json' ], app ), 'tsc --strict on the README\'s examples' );
+		writeFileSync( join( app, 'tsconfig.wrong.json' ), JSON.stringify( { compilerOptions, files: [ 'wrong.ts', 'wrongWebGPU.ts' ] } ) );
 		const wrong = run( process.execPath, [ tsc, '-p', 'tsconfig.wrong.json' ], app );
 		expect( wrong.status ).not.toBe( 0 );
 		expect( wrong.stdout ).toMatch( /wrong\.ts\(2,\d+\): error TS2322/ );
+		expect( wrong.stdout ).toMatch( /wrongWebGPU\.ts\(4,\d+\): error TS2345/ );
+		expect( wrong.stdout.match( /error TS/g ) ).toHaveLength( 2 );
 
 	} );
 
@@ -144,5 +158,68 @@ describe.skipIf( skipReason !== '' )( `a fresh project installs the packed packa
 		}, null, '\t' ) + '\n' );
 
 	} );
+
+	it( 'a Vite build of the README\'s WebGPURenderer example as a page bundles three-capture-lighting/webgpu and three/webgpu, with no CLI or puppeteer module', async () => {
+
+		page = join( app, 'webgpu-page' );
+		mkdirSync( page, { recursive: true } );
+		writeFileSync( join( page, 'index.html' ), '<!doctype html>\n<meta charset="utf-8">\n<script type="module" src="./main.js"></script>\n' );
+		writeFileSync( join( page, 'main.js' ), readmeWebGPUPage( ROOT ) );
+		const { build } = await import( 'vite' );
+		const output = await build( {
+			configFile: false, root: page, logLevel: 'silent',
+			build: { outDir: join( page, 'dist' ), emptyOutDir: true, reportCompressedSize: false, chunkSizeWarningLimit: 4096 },
+		} ) as Rollup.RollupOutput | Rollup.RollupOutput[];
+		const chunks = ( Array.isArray( output ) ? output : [ output ] ).flatMap( ( o ) => o.output ).filter( ( o ): o is Rollup.OutputChunk => o.type === 'chunk' );
+		const modules = chunks.flatMap( ( chunk ) => Object.entries( chunk.modules ).filter( ( [ , m ] ) => m.renderedLength > 0 ).map( ( [ id ] ) => id.split( sep ).join( '/' ) ) );
+		const ours = modules.filter( ( id ) => id.includes( 'node_modules/three-capture-lighting/' ) );
+		expect( ours.some( ( id ) => id.endsWith( 'dist/webgpu/installShading.js' ) ), 'the entry\'s shading installer' ).toBe( true );
+		expect( ours.some( ( id ) => id.endsWith( 'dist/webgpu/installCapture.js' ) ), 'the entry\'s capture installer' ).toBe( true );
+		expect( modules.some( ( id ) => id.includes( 'node_modules/three/build/three.webgpu.js' ) ) ).toBe( true );
+		expect( ours.filter( ( id ) => /dist\/cli\//.test( id ) ) ).toEqual( [] );
+		expect( modules.filter( ( id ) => id.includes( 'puppeteer' ) ) ).toEqual( [] );
+		built = join( page, 'dist' );
+
+	}, 300_000 );
+
+	const chromium = resolveChromiumPath();
+	const noChromium = checkChromium( chromium.path, chromium.source );
+	it.skipIf( noChromium !== '' )( `the built page runs the README's WebGPURenderer example on the WebGL2 backend: the sphere added with volume.add() shows the furnace's radiance${noChromium ? ' — SKIPPED: ' + noChromium : ''}`, async () => {
+
+		expect( built, 'the Vite build above' ).not.toBe( '' );
+		const server = await serveFolder( built );
+		const browser = await launchChromium( { browser: chromium.path, webgpu: true } );
+		try {
+
+			const tab = await browser.newPage();
+			const errors: string[] = [];
+			tab.on( 'pageerror', ( error ) => errors.push( ( error as Error ).message ) );
+			tab.on( 'console', ( message ) => { if ( message.type() === 'error' ) errors.push( message.text() ); } );
+			await tab.goto( server.url + '?backend=webgl2', { waitUntil: 'load', timeout: 120_000 } );
+			await tab.waitForFunction( 'window.result', { timeout: 240_000 } );
+			const result = await tab.evaluate( 'window.result' ) as { error?: string; backend: string; frames: number; lighting: string; sphere: number[]; wall: number[]; unlit: number[] };
+			expect( result.error ).toBeUndefined();
+			expect( errors ).toEqual( [] );
+			expect( result.backend ).toBe( 'webgl2' );
+			expect( result.frames ).toBeGreaterThanOrEqual( 5 );
+			expect( result.lighting ).toBe( 'dynamic' );
+			// A white Lambertian surface inside a closed room of uniform radiance L reflects L (E = πL,
+			// out = E / π): no light in the scene, so all of it is the volume's. Removed, it is black.
+			for ( const c of [ 0, 1, 2 ] ) {
+
+				expect( result.wall[ c ] ).toBeCloseTo( FURNACE_RADIANCE, 2 );
+				expect( Math.abs( result.sphere[ c ] - FURNACE_RADIANCE ), `sphere ${result.sphere}` ).toBeLessThan( 2 / 255 );
+				expect( result.unlit[ c ] ).toBeLessThan( 1 / 255 );
+
+			}
+
+		} finally {
+
+			await browser.close();
+			await server.close();
+
+		}
+
+	}, 300_000 );
 
 } );
