@@ -95,7 +95,7 @@ gui.add( params, 'samples', 1, 256, 1 ).onFinishChange( bake );
 
 // ?present=0 (tests): frames go to a render target, never to the canvas — headless Chromium on
 // SwiftShader loses a WebGPU device soon after its first canvas present (as the demo pages' flag).
-const offscreen = new URLSearchParams( location.search ).get( 'present' ) === '0' ? new THREE.RenderTarget( 320, 180, { type: THREE.HalfFloatType } ) : null;
+const offscreen = new URLSearchParams( location.search ).get( 'present' ) === '0' ? new THREE.RenderTarget( 320, 180, { type: THREE.HalfFloatType } ) as THREE.WebGLRenderTarget : null;
 
 renderer.setAnimationLoop( ( time ) => {
 
