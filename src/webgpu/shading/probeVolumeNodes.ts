@@ -1,6 +1,6 @@
-import { Data3DTexture, FloatType, HalfFloatType, LinearFilter, Matrix4, RGBAFormat, Vector3, type Material } from 'three';
+import { Data3DTexture, FloatType, HalfFloatType, LinearFilter, Matrix4, RGBAFormat, Vector3, Vector4, type Material } from 'three';
 import {
-	attribute, dot, modelNormalMatrix, normalLocal, normalWorld, positionWorld, texture3D, uniform, varying, vec3, vec4,
+	attribute, modelNormalMatrix, normalLocal, normalWorld, positionWorld, texture3D, uniform, varying,
 } from 'three/tsl';
 import { atlasIrradiance, irradianceFromPacked } from './packedSHIrradiance.js';
 import { probeMaterialRecords, type ProbeMaterialRecord, type ProbeNodeVariant } from './probeMaterialRecords.js';
@@ -41,31 +41,78 @@ function perDraw<T>( value: T, update: ( record: ProbeMaterialRecord | null, val
 
 }
 
-/**
- * The per-draw uniforms shared by all variants: three irradiance matrices (R, G, B, for world
- * normals), intensity and direct scale. A draw of a material without a record keeps zero light.
+/*
+ * The blended SH's irradiance per draw, as nine RGB coefficients of E(n) = Σ cᵢ·bᵢ(n) with
+ * bᵢ = x², y², xy, yz, xz, x, y, z, 1 — the record's matrices M_c (E_c = nᵀM_c n, symmetric)
+ * expanded, z² folded into x², y² and the constant (x² + y² + z² = 1 for a unit normal): 5
+ * products and 9 vec3 multiply-adds per pixel instead of three 4 × 4 matrix products and dots
+ * (fewer than three's LightProbe node, which scales its 9 coefficients per pixel). Slot i's RGB
+ * is column i % 4 of uniform ⌊i / 4⌋ (two matrices and a vector), its w unused.
  */
-const matrixR = perDraw( new Matrix4(), ( record, m ) => copyMatrix( record, 0, m ) );
-const matrixG = perDraw( new Matrix4(), ( record, m ) => copyMatrix( record, 16, m ) );
-const matrixB = perDraw( new Matrix4(), ( record, m ) => copyMatrix( record, 32, m ) );
+
+/** Coefficient `slot` (0–8, the order above) of channel `c` from the record's 48 matrix floats. */
+function coefficient( m: Float32Array, c: number, slot: number ): number {
+
+	const o = 16 * c, zz = m[ o + 10 ];
+	switch ( slot ) {
+
+		case 0: return m[ o ] - zz;
+		case 1: return m[ o + 5 ] - zz;
+		case 2: return 2 * m[ o + 1 ];
+		case 3: return 2 * m[ o + 6 ];
+		case 4: return 2 * m[ o + 2 ];
+		case 5: return 2 * m[ o + 3 ];
+		case 6: return 2 * m[ o + 7 ];
+		case 7: return 2 * m[ o + 11 ];
+		default: return m[ o + 15 ] + zz;
+
+	}
+
+}
+
+/** Writes slots first … first + count − 1 as RGB0 columns of `target` (zero light without a record). */
+function packCoefficients( record: ProbeMaterialRecord | null, first: number, count: number, target: number[] ): undefined {
+
+	for ( let k = 0; k < count; k ++ ) for ( let c = 0; c < 4; c ++ ) {
+
+		target[ 4 * k + c ] = record === null || c === 3 ? 0 : coefficient( record.uniforms.probeVolumeMatrices.value, c, first + k );
+
+	}
+
+	return undefined;
+
+}
+
+const coefficients0 = perDraw( new Matrix4(), ( record, m ) => packCoefficients( record, 0, 4, m.elements ) );
+const coefficients1 = perDraw( new Matrix4(), ( record, m ) => packCoefficients( record, 4, 4, m.elements ) );
+const lastSlot = [ 0, 0, 0, 0 ];
+const coefficients2 = perDraw( new Vector4(), ( record, v ) => {
+
+	packCoefficients( record, 8, 1, lastSlot );
+	v.fromArray( lastSlot );
+	return undefined;
+
+} );
 const intensity = perDraw( 1, ( record ) => record?.uniforms.probeVolumeIntensity.value ?? 0 );
 
 /** Scale of direct light (`probeVolumeDirectScale`), read by the lighting-model wrapper. */
 export const directScale = perDraw( 1, ( record ) => record?.uniforms.probeVolumeDirectScale.value ?? 1 );
 
-function copyMatrix( record: ProbeMaterialRecord | null, offset: number, target: Matrix4 ): undefined {
+/** E(n) per channel for a unit world normal (the record's nᵀMn, expanded as above). */
+function irradianceFromCoefficients( normal: TSLNode ): TSLNode {
 
-	if ( record === null ) target.elements.fill( 0 );
-	else target.fromArray( record.uniforms.probeVolumeMatrices.value, offset );
-	return undefined;
-
-}
-
-/** E(n) = nᵀMn per channel for a unit world normal, with n = ( normal, 1 ). */
-function irradianceFromMatrices( normal: TSLNode ): TSLNode {
-
-	const n = vec4( normal, 1 );
-	return vec3( dot( n, matrixR.mul( n ) ), dot( n, matrixG.mul( n ) ), dot( n, matrixB.mul( n ) ) );
+	const n = normal.toVar();
+	const x = n.x, y = n.y, z = n.z;
+	const c = ( uniform: TSLNode, column: number ) => uniform.element( column ).xyz;
+	return c( coefficients0, 0 ).mul( x.mul( x ) )
+		.add( c( coefficients0, 1 ).mul( y.mul( y ) ) )
+		.add( c( coefficients0, 2 ).mul( x.mul( y ) ) )
+		.add( c( coefficients0, 3 ).mul( y.mul( z ) ) )
+		.add( c( coefficients1, 0 ).mul( x.mul( z ) ) )
+		.add( c( coefficients1, 1 ).mul( x ) )
+		.add( c( coefficients1, 2 ).mul( y ) )
+		.add( c( coefficients1, 3 ).mul( z ) )
+		.add( coefficients2.xyz );
 
 }
 
@@ -126,10 +173,10 @@ function buildIrradiance( variant: ProbeNodeVariant ): TSLNode {
 	switch ( variant ) {
 
 		case 'pixel':
-			return irradianceFromMatrices( normalWorld ).mul( intensity );
+			return irradianceFromCoefficients( normalWorld ).mul( intensity );
 		case 'vertex':
 			// The world normal at the vertex (three's LightProbe would use the pixel's), interpolated.
-			return varying( irradianceFromMatrices( ( modelNormalMatrix as TSLNode ).mul( normalLocal ).normalize() ).mul( intensity ), 'vProbeVolumeIrradiance' );
+			return varying( irradianceFromCoefficients( ( modelNormalMatrix as TSLNode ).mul( normalLocal ).normalize() ).mul( intensity ), 'vProbeVolumeIrradiance' );
 		case 'vertexIrradiance':
 			return ( attribute( 'probeIrradiance', 'vec3' ) as TSLNode ).mul( intensity );
 		case 'vertexSH': {
