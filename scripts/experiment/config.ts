@@ -117,7 +117,7 @@ export const CONFIGS: Record<SceneName, SceneConfig> = {
 		grids: [ [ 4, 2, 2 ], [ 6, 3, 3 ], [ 8, 4, 4 ], [ 12, 6, 6 ] ],
 		denseSpacing: 2.4, vertexOffset: 0.3, vertexSpacing: 2.0, denseMinSpacing: 0.8,
 		autoCounts: [ 22, 43, 64, 86, 130, 216, 300 ],
-		fitPoints: 2400, fitCounts: [ 22, 43, 64, 86, 130, 216 ], equalStorage: [ [ 86, 344 ], [ 108, 432 ] ],
+		fitPoints: 2400, fitPointsPerProbe: 14, fitCounts: [ 22, 43, 64, 86, 130, 216 ], equalStorage: [ [ 86, 344 ], [ 108, 432 ] ],
 		walkableHeight: 2,
 		targets: { autoProbes: 86, autoError: 0.115, plainFitted: 0.155, gridCountRatio: 0.8 },
 		assets: [ 'sponza/sponza.obj', 'sponza/sponza.mtl' ],
